@@ -1,0 +1,234 @@
+/*---------------------------------------------------------------------------*\
+  flapFoam: free-flight simulation of flapping-wing drones on OpenFOAM v1912
+-------------------------------------------------------------------------------
+Application
+    rigidBodySimulate
+
+Group
+    grpFlapFoamUtilities
+
+Description
+    Runs a multibody model with prescribed joints (eABA) without a mesh:
+    gravity and restraints are the only loads.  The same model and the same
+    dictionaries as the overset mesh motion solver, so the dynamics can be
+    checked quickly.
+
+    Reads
+      - constant/dynamicMeshDict: the multibody dictionary at the top level
+        (solver, nIter, accelerationRelaxation, accelerationDamping, g,
+        bodies, restraints, imposedMotion: see eABAMotion);
+      - system/controlDict: startTime, endTime, deltaT, writeControl and
+        writeInterval;
+      - <startTime>/uniform/rigidBodyMotionState when present: the initial
+        q, qDot (and qDdot) lists; zero otherwise.
+
+    Writes
+      - the q-index -> body/joint map to the log;
+      - postProcessing/rigidBodySimulate/<startTime>/joints.dat: a header
+            # time q_0 qDot_0 qDdot_0 q_1 ... tau_<j> power_<j>
+        (tau, power for each prescribed joint j: the actuator force on top
+        of the applied joint force, and tau*qDot) and one row per write
+        time, including startTime, flushed as it is written;
+      - <endTime>/uniform/rigidBodyMotionState: the state to restart from.
+
+Usage
+    \b rigidBodySimulate [-case DIR]
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "Time.H"
+#include "IOdictionary.H"
+#include "OFstream.H"
+#include "eABAMotion.H"
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+//- One row of joints.dat: time, q qDot qDdot per joint, tau power per
+//- prescribed joint
+void writeRow(OFstream& os, const RBD::eABAMotion& model)
+{
+    const RBD::rigidBodyModelState& s = model.state();
+
+    os  << s.t();
+    forAll(s.q(), qi)
+    {
+        os  << ' ' << s.q()[qi] << ' ' << s.qDot()[qi] << ' ' << s.qDdot()[qi];
+    }
+
+    const scalarField power(model.prescribedPower(s));
+    forAll(power, pi)
+    {
+        os  << ' ' << model.prescribedTau()[pi] << ' ' << power[pi];
+    }
+    os  << endl;
+}
+
+
+//- Write the state to <time>/uniform/rigidBodyMotionState
+void writeState(const Time& runTime, const RBD::eABAMotion& model)
+{
+    IOdictionary stateDict
+    (
+        IOobject
+        (
+            "rigidBodyMotionState",
+            runTime.timeName(),
+            "uniform",
+            runTime,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    model.state().write(stateDict);
+    stateDict.regIOobject::writeObject
+    (
+        IOstream::ASCII,
+        IOstream::currentVersion,
+        IOstream::UNCOMPRESSED,
+        true
+    );
+}
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Run a multibody model with prescribed joints (eABA) without a mesh:"
+        " gravity and restraints only."
+    );
+    argList::noParallel();
+    argList::noFunctionObjects();
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+
+    const IOdictionary modelDict
+    (
+        IOobject
+        (
+            "dynamicMeshDict",
+            runTime.constant(),
+            runTime,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+
+    // Initial state: <startTime>/uniform/rigidBodyMotionState if present
+    IOobject stateIO
+    (
+        "rigidBodyMotionState",
+        runTime.timeName(),
+        "uniform",
+        runTime,
+        IOobject::READ_IF_PRESENT,
+        IOobject::NO_WRITE,
+        false
+    );
+
+    const bool restart = stateIO.typeHeaderOk<IOdictionary>(false);
+    const dictionary stateDict
+    (
+        restart ? dictionary(IOdictionary(stateIO)) : dictionary()
+    );
+
+    if (restart)
+    {
+        Info<< "Initial state from " << stateIO.objectPath() << nl << endl;
+    }
+    else
+    {
+        Info<< "No " << stateIO.objectPath() << ": zero initial state"
+            << nl << endl;
+    }
+
+    RBD::eABAMotion model(runTime, modelDict, stateDict);
+
+    model.writeJointMap(Info);
+    Info<< nl << "Prescribed q indices: " << model.prescribed() << nl
+        << "Integrator: " << modelDict.subDict("solver").get<word>("type")
+        << ", nIter " << model.nIter() << nl << endl;
+
+    // Gravity and restraints only
+    const scalarField tau(model.nDoF(), Zero);
+    const Field<spatialVector> fx(model.nBodies(), Zero);
+
+    // Consistent state at the start: exact prescribed joints, free
+    // accelerations and the prescribed joints' forces.  On a restart the
+    // stored accelerations are kept (the next step starts from them) and
+    // only the forces are evaluated.
+    model.state().t() = runTime.value();
+    if (restart)
+    {
+        RBD::rigidBodyModelState s(model.state());
+        model.evaluate(s, tau, fx);
+        model.forwardDynamicsCorrection(model.state());
+    }
+    else
+    {
+        model.evaluate(model.state(), tau, fx);
+    }
+
+    // Output table
+    const fileName outputDir
+    (
+        runTime.globalPath()/"postProcessing"/"rigidBodySimulate"
+       /runTime.timeName()
+    );
+    mkDir(outputDir);
+    OFstream os(outputDir/"joints.dat");
+    os.precision(15);
+
+    os  << "# time";
+    for (label qi = 0; qi < model.nDoF(); ++qi)
+    {
+        os  << " q_" << qi << " qDot_" << qi << " qDdot_" << qi;
+    }
+    for (const label qi : model.prescribed())
+    {
+        os  << " tau_" << qi << " power_" << qi;
+    }
+    os  << endl;
+
+    writeRow(os, model);
+
+    Info<< "Starting time loop" << nl << endl;
+
+    while (runTime.run())
+    {
+        ++runTime;
+
+        model.newTime();
+        for (label iter = 0; iter < model.nIter(); ++iter)
+        {
+            model.solve(runTime.value(), runTime.deltaTValue(), tau, fx);
+        }
+
+        if (runTime.writeTime())
+        {
+            writeRow(os, model);
+            Info<< "Time = " << runTime.timeName()
+                << "  q = " << model.state().q() << endl;
+        }
+    }
+
+    writeState(runTime, model);
+
+    Info<< nl << "Wrote " << os.name() << nl
+        << "Wrote " << runTime.timeName()/"uniform"/"rigidBodyMotionState"
+        << nl << nl << "ExecutionTime = " << runTime.elapsedCpuTime() << " s"
+        << nl << "End" << nl << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

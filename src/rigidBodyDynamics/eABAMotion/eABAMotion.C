@@ -1,0 +1,299 @@
+/*---------------------------------------------------------------------------*\
+  flapFoam: free-flight simulation of flapping-wing drones on OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "eABAMotion.H"
+#include "eABASolver.H"
+#include "Time.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace RBD
+{
+    defineTypeNameAndDebug(eABAMotion, 0);
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::RBD::eABAMotion::readCoeffs(const dictionary& dict)
+{
+    nIter_ = dict.getOrDefault<label>("nIter", 1);
+    if (nIter_ < 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "nIter " << nIter_ << ": must be at least 1"
+            << exit(FatalIOError);
+    }
+
+    aRelax_ = dict.getOrDefault<scalar>("accelerationRelaxation", 1);
+    if (aRelax_ <= 0 || aRelax_ > 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "accelerationRelaxation " << aRelax_
+            << ": allowed range is (0, 1]" << exit(FatalIOError);
+    }
+
+    aDamp_ = dict.getOrDefault<scalar>("accelerationDamping", 1);
+    if (aDamp_ <= 0 || aDamp_ > 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "accelerationDamping " << aDamp_
+            << ": allowed range is (0, 1]" << exit(FatalIOError);
+    }
+
+    report_ = dict.getOrDefault<Switch>("report", false);
+
+    if (dict.found("g"))
+    {
+        g() = dict.get<vector>("g");
+    }
+}
+
+
+void Foam::RBD::eABAMotion::initialise()
+{
+    setPrescribed(imposedMotions_.joints());
+
+    // Body transforms of the zero state: the reference for point motion
+    forwardDynamicsCorrection(rigidBodyModelState(*this));
+    X00_ = X0_;
+
+    forwardDynamicsCorrection(motionState_);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::RBD::eABAMotion::eABAMotion(const Time& time, const dictionary& dict)
+:
+    eABAMotion(time, dict, dict)
+{}
+
+
+Foam::RBD::eABAMotion::eABAMotion
+(
+    const Time& time,
+    const dictionary& dict,
+    const dictionary& stateDict
+)
+:
+    eABAModel(time, dict),
+    imposedMotions_(dict, jointDoF()),
+    motionState_(*this, stateDict),
+    motionState0_(motionState_),
+    nIter_(1),
+    aRelax_(1),
+    aDamp_(1),
+    report_(false),
+    solver_(nullptr),
+    qDdotPrev_(nDoF(), Zero)
+{
+    readCoeffs(dict);
+    solver_ = eABASolver::New(*this, dict.subDict("solver"));
+    initialise();
+}
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
+
+Foam::RBD::eABAMotion::~eABAMotion()
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::spatialTransform Foam::RBD::eABAMotion::X00(const label bodyID) const
+{
+    if (merged(bodyID))
+    {
+        const subBody& mBody = mergedBody(bodyID);
+        return mBody.masterXT() & X00_[mBody.masterID()];
+    }
+
+    return X00_[bodyID];
+}
+
+
+void Foam::RBD::eABAMotion::impose(rigidBodyModelState& state) const
+{
+    imposedMotions_.evaluate(state.t(), state.q(), state.qDot(), state.qDdot());
+}
+
+
+void Foam::RBD::eABAMotion::forwardDynamics
+(
+    rigidBodyModelState& state,
+    const scalarField& tau,
+    const Field<spatialVector>& fx
+) const
+{
+    const bool relax = (aRelax_ != 1 || aDamp_ != 1);
+
+    if (relax)
+    {
+        qDdotPrev_ = state.qDdot();
+    }
+
+    eABAModel::forwardDynamics(state, tau, fx);
+
+    if (relax)
+    {
+        // Free joints only: the prescribed accelerations stay exact
+        scalarField& qDdot = state.qDdot();
+        const labelList& pq = prescribed();
+        label pi = 0;
+
+        forAll(qDdot, qi)
+        {
+            if (pi < pq.size() && pq[pi] == qi)
+            {
+                ++pi;
+                continue;
+            }
+
+            qDdot[qi] =
+                aDamp_*(aRelax_*qDdot[qi] + (1 - aRelax_)*qDdotPrev_[qi]);
+        }
+    }
+}
+
+
+void Foam::RBD::eABAMotion::evaluate
+(
+    rigidBodyModelState& state,
+    const scalarField& tau,
+    const Field<spatialVector>& fx
+) const
+{
+    impose(state);
+    forwardDynamicsCorrection(state);
+
+    scalarField rtau(tau);
+    Field<spatialVector> rfx(nBodies(), Zero);
+    if (fx.size())
+    {
+        rfx = fx;
+    }
+    applyRestraints(rtau, rfx, state);
+
+    eABAModel::forwardDynamics(state, rtau, rfx);
+    forwardDynamicsCorrection(state);
+}
+
+
+void Foam::RBD::eABAMotion::solve
+(
+    const scalar t,
+    const scalar deltaT,
+    const scalarField& tau,
+    const Field<spatialVector>& fx
+)
+{
+    motionState_.t() = t;
+    motionState_.deltaT() = deltaT;
+
+    // First step: no previous step size
+    if (motionState0_.deltaT() < SMALL)
+    {
+        motionState0_.t() = t;
+        motionState0_.deltaT() = deltaT;
+    }
+
+    if (Pstream::master())
+    {
+        solver_->solve(tau, fx);
+        impose(motionState_);
+    }
+
+    Pstream::scatter(motionState_);
+    Pstream::scatter(tauPrescribed_);
+
+    forwardDynamicsCorrection(motionState_);
+
+    if (report_)
+    {
+        for (label bodyID = 1; bodyID < nBodies(); ++bodyID)
+        {
+            status(bodyID);
+        }
+    }
+}
+
+
+void Foam::RBD::eABAMotion::writeJointMap(Ostream& os) const
+{
+    os  << "Joint state map (q index: body, joint type, prescribed by)" << nl;
+
+    for (label i = 1; i < nBodies(); ++i)
+    {
+        const joint& jnt = joints()[i];
+
+        for (label k = 0; k < jnt.nDoF(); ++k)
+        {
+            const label qi = jnt.qIndex() + k;
+
+            os  << "    q[" << qi << "]: body " << name(i)
+                << ", joint " << jnt.type();
+            if (jnt.nDoF() > 1)
+            {
+                os  << " component " << k;
+            }
+
+            for (const imposedMotion& m : imposedMotions_)
+            {
+                if (m.joints().found(qi))
+                {
+                    os  << ", prescribed by " << m.name()
+                        << " (" << m.type() << ")";
+                }
+            }
+            os  << nl;
+        }
+    }
+    os  << flush;
+}
+
+
+void Foam::RBD::eABAMotion::status(const label bodyID) const
+{
+    const spatialTransform X(X0(bodyID));
+    const spatialVector vb(v(bodyID, Zero));
+
+    Info<< "Multibody motion of body " << name(bodyID) << nl
+        << "    Centre of rotation: " << X.r() << nl
+        << "    Orientation: " << X.E() << nl
+        << "    Linear velocity: " << vb.l() << nl
+        << "    Angular velocity: " << vb.w() << endl;
+}
+
+
+void Foam::RBD::eABAMotion::write(Ostream& os) const
+{
+    eABAModel::write(os);
+
+    os.beginBlock("solver");
+    solver_->write(os);
+    os.endBlock();
+
+    os.writeEntry("nIter", nIter_);
+    os.writeEntry("accelerationRelaxation", aRelax_);
+    os.writeEntry("accelerationDamping", aDamp_);
+    os.writeEntry("report", report_);
+
+    imposedMotions_.write(os);
+}
+
+
+bool Foam::RBD::eABAMotion::read(const dictionary& dict)
+{
+    const bool ok = rigidBodyModel::read(dict);
+    readCoeffs(dict);
+    return ok;
+}
+
+
+// ************************************************************************* //

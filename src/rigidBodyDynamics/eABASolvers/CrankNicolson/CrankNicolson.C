@@ -1,0 +1,68 @@
+/*---------------------------------------------------------------------------*\
+  flapFoam: free-flight simulation of flapping-wing drones on OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "CrankNicolson.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace RBD
+{
+namespace eABASolvers
+{
+    defineTypeNameAndDebug(CrankNicolson, 0);
+    addToRunTimeSelectionTable(eABASolver, CrankNicolson, dictionary);
+}
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::RBD::eABASolvers::CrankNicolson::CrankNicolson
+(
+    eABAMotion& model,
+    const dictionary& dict
+)
+:
+    eABASolver(model),
+    aoc_(dict.getOrDefault<scalar>("aoc", 0.5)),
+    voc_(dict.getOrDefault<scalar>("voc", 0.5))
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::RBD::eABASolvers::CrankNicolson::solve
+(
+    const scalarField& tau,
+    const Field<spatialVector>& fx
+)
+{
+    // Accelerations at the current iterate with the exact prescribed state
+    model_.impose(state());
+    applyRestraints(tau, fx);
+    model_.forwardDynamics(state(), rtau_, rfx_);
+
+    const scalar dt = deltaT();
+
+    qDot() = qDot0() + dt*(aoc_*qDdot() + (1 - aoc_)*qDdot0());
+
+    q() = q0() + dt*(voc_*qDot() + (1 - voc_)*qDot0());
+
+    correctQuaternionJoints();
+}
+
+
+void Foam::RBD::eABASolvers::CrankNicolson::write(Ostream& os) const
+{
+    eABASolver::write(os);
+    os.writeEntry("aoc", aoc_);
+    os.writeEntry("voc", voc_);
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,75 @@
+/*---------------------------------------------------------------------------*\
+  flapFoam: free-flight simulation of flapping-wing drones on OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "Newmark.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace RBD
+{
+namespace eABASolvers
+{
+    defineTypeNameAndDebug(Newmark, 0);
+    addToRunTimeSelectionTable(eABASolver, Newmark, dictionary);
+}
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::RBD::eABASolvers::Newmark::Newmark
+(
+    eABAMotion& model,
+    const dictionary& dict
+)
+:
+    eABASolver(model),
+    gamma_(dict.getOrDefault<scalar>("gamma", 0.5)),
+    beta_
+    (
+        max
+        (
+            0.25*sqr(gamma_ + 0.5),
+            dict.getOrDefault<scalar>("beta", 0.25)
+        )
+    )
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::RBD::eABASolvers::Newmark::solve
+(
+    const scalarField& tau,
+    const Field<spatialVector>& fx
+)
+{
+    // Accelerations at the current iterate with the exact prescribed state
+    model_.impose(state());
+    applyRestraints(tau, fx);
+    model_.forwardDynamics(state(), rtau_, rfx_);
+
+    const scalar dt = deltaT();
+
+    qDot() = qDot0() + dt*(gamma_*qDdot() + (1 - gamma_)*qDdot0());
+
+    q() = q0() + dt*qDot0() + sqr(dt)*(beta_*qDdot() + (0.5 - beta_)*qDdot0());
+
+    correctQuaternionJoints();
+}
+
+
+void Foam::RBD::eABASolvers::Newmark::write(Ostream& os) const
+{
+    eABASolver::write(os);
+    os.writeEntry("gamma", gamma_);
+    os.writeEntry("beta", beta_);
+}
+
+
+// ************************************************************************* //
