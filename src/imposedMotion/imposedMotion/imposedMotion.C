@@ -1,0 +1,82 @@
+/*---------------------------------------------------------------------------*\
+  flapFoam: free-flight simulation of flapping-wing drones on OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "imposedMotion.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(imposedMotion, 0);
+    defineRunTimeSelectionTable(imposedMotion, dictionary);
+}
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::imposedMotion::getPositive
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const scalar value = dict.get<scalar>(key);
+
+    if (!(value > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' = " << value
+            << " is out of range: it must be > 0" << nl
+            << exit(FatalIOError);
+    }
+
+    return value;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::imposedMotion::imposedMotion
+(
+    const word& name,
+    const dictionary& dict
+)
+:
+    name_(name),
+    dict_(dict),
+    joints_(1, dict.get<label>("joint"))
+{}
+
+
+Foam::imposedMotion::imposedMotion
+(
+    const word& name,
+    const dictionary& dict,
+    const labelList& joints
+)
+:
+    name_(name),
+    dict_(dict),
+    joints_(joints)
+{}
+
+
+// * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * * //
+
+void Foam::imposedMotion::write(Ostream& os) const
+{
+    os.writeEntry("type", type());
+
+    if (jointsKey() == "joint" && joints_.size() == 1)
+    {
+        os.writeEntry("joint", joints_.first());
+    }
+    else
+    {
+        os.writeEntry(jointsKey(), joints_);
+    }
+}
+
+
+// ************************************************************************* //

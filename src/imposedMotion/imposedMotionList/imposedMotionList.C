@@ -1,0 +1,210 @@
+/*---------------------------------------------------------------------------*\
+  flapFoam: free-flight simulation of flapping-wing drones on OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "imposedMotionList.H"
+#include "StringStream.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::imposedMotionList::imposedMotionList
+(
+    const dictionary& modelDict,
+    const labelUList& jointDoF
+)
+:
+    PtrList<imposedMotion>(),
+    joints_(),
+    motionI_(),
+    localI_()
+{
+    const word key("imposedMotion");
+
+    if (!modelDict.found(key, keyType::LITERAL))
+    {
+        return;     // no prescribed joint
+    }
+
+    const dictionary* motionsDictPtr =
+        modelDict.findDict(key, keyType::LITERAL);
+
+    if (!motionsDictPtr)
+    {
+        FatalIOErrorInFunction(modelDict)
+            << "Entry '" << key << "' is not a dictionary" << nl
+            << exit(FatalIOError);
+    }
+
+    const dictionary& motionsDict = *motionsDictPtr;
+
+    // Read the motions: one per sub-dictionary
+    for (const entry& e : motionsDict)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(motionsDict)
+                << "Entry '" << e.keyword() << "' of '" << key
+                << "' is not a dictionary: each entry is one motion"
+                << " { type ...; ... }" << nl
+                << exit(FatalIOError);
+        }
+
+        append(imposedMotion::New(e.keyword(), e.dict()));
+    }
+
+    // Check the driven joints against the model
+    const label nDoF = jointDoF.size();
+
+    // For each q index: the motion driving it (-1: none) and the index in
+    // that motion's joints()
+    labelList ownerMotion(nDoF, -1);
+    labelList ownerLocal(nDoF, -1);
+
+    forAll(*this, motioni)
+    {
+        const imposedMotion& motion = operator[](motioni);
+        const labelList& joints = motion.joints();
+
+        forAll(joints, locali)
+        {
+            const label j = joints[locali];
+
+            if (j < 0 || j >= nDoF)
+            {
+                FatalIOErrorInFunction(motion.dict())
+                    << "Entry '" << motion.jointsKey() << "' of '"
+                    << motion.name() << "': joint " << j
+                    << " is out of range: the model has " << nDoF
+                    << " degrees of freedom, allowed 0.." << nDoF - 1 << nl
+                    << exit(FatalIOError);
+            }
+
+            if (jointDoF[j] != 1)
+            {
+                FatalIOErrorInFunction(motion.dict())
+                    << "Entry '" << motion.jointsKey() << "' of '"
+                    << motion.name() << "': joint " << j
+                    << " belongs to a joint with " << jointDoF[j]
+                    << " degrees of freedom; only 1-DoF joints can be"
+                    << " prescribed" << nl
+                    << exit(FatalIOError);
+            }
+
+            if (ownerMotion[j] >= 0)
+            {
+                const imposedMotion& other = operator[](ownerMotion[j]);
+
+                OStringStream by;
+                if (ownerMotion[j] == motioni)
+                {
+                    by  << "it appears twice in '" << motion.jointsKey()
+                        << "' of '" << motion.name() << "'";
+                }
+                else
+                {
+                    by  << "by '" << other.name() << "' ('"
+                        << other.jointsKey() << "') and by '"
+                        << motion.name() << "' ('" << motion.jointsKey()
+                        << "')";
+                }
+
+                FatalIOErrorInFunction(motion.dict())
+                    << "Entry '" << motion.jointsKey() << "' of '"
+                    << motion.name() << "': joint " << j
+                    << " is prescribed twice: " << by.str().c_str() << nl
+                    << exit(FatalIOError);
+            }
+
+            ownerMotion[j] = motioni;
+            ownerLocal[j] = locali;
+        }
+    }
+
+    // Prescribed joints, ascending
+    label nPrescribed = 0;
+    for (const label motioni : ownerMotion)
+    {
+        if (motioni >= 0)
+        {
+            ++nPrescribed;
+        }
+    }
+
+    joints_.setSize(nPrescribed);
+    motionI_.setSize(nPrescribed);
+    localI_.setSize(nPrescribed);
+
+    label k = 0;
+    forAll(ownerMotion, j)
+    {
+        if (ownerMotion[j] >= 0)
+        {
+            joints_[k] = j;
+            motionI_[k] = ownerMotion[j];
+            localI_[k] = ownerLocal[j];
+            ++k;
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * * //
+
+void Foam::imposedMotionList::evaluate
+(
+    const scalar t,
+    scalarField& q,
+    scalarField& qDot,
+    scalarField& qDdot
+) const
+{
+    if
+    (
+        joints_.size()
+     && (
+            joints_.last() >= q.size()
+         || joints_.last() >= qDot.size()
+         || joints_.last() >= qDdot.size()
+        )
+    )
+    {
+        FatalErrorInFunction
+            << "State of sizes " << q.size() << ' ' << qDot.size() << ' '
+            << qDdot.size() << " too small for the prescribed joint "
+            << joints_.last() << exit(FatalError);
+    }
+
+    forAll(joints_, k)
+    {
+        const label j = joints_[k];
+
+        operator[](motionI_[k]).evaluate
+        (
+            localI_[k],
+            t,
+            q[j],
+            qDot[j],
+            qDdot[j]
+        );
+    }
+}
+
+
+void Foam::imposedMotionList::write(Ostream& os) const
+{
+    os.beginBlock("imposedMotion");
+
+    forAll(*this, motioni)
+    {
+        const imposedMotion& motion = operator[](motioni);
+
+        os.beginBlock(motion.name());
+        motion.write(os);
+        os.endBlock();
+    }
+
+    os.endBlock();
+}
+
+
+// ************************************************************************* //

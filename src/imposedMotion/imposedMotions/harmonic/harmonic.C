@@ -1,0 +1,75 @@
+/*---------------------------------------------------------------------------*\
+  flapFoam: free-flight simulation of flapping-wing drones on OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "harmonic.H"
+#include "mathematicalConstants.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace imposedMotions
+{
+    defineTypeNameAndDebug(harmonic, 0);
+    addToRunTimeSelectionTable(imposedMotion, harmonic, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::imposedMotions::harmonic::harmonic
+(
+    const word& name,
+    const dictionary& dict
+)
+:
+    imposedMotion(name, dict),
+    amplitude_(dict.get<scalar>("amplitude")),
+    frequency_(getPositive(dict, "frequency")),
+    phase_(dict.getOrDefault<scalar>("phase", 0)),
+    offset_(dict.getOrDefault<scalar>("offset", 0)),
+    omega_(constant::mathematical::twoPi*frequency_)
+{}
+
+
+// * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * * //
+
+void Foam::imposedMotions::harmonic::evaluate
+(
+    const label,
+    const scalar t,
+    scalar& q,
+    scalar& qDot,
+    scalar& qDdot
+) const
+{
+    const scalar theta = omega_*t + phase_;
+    const scalar c = cos(theta);
+    const scalar s = sin(theta);
+
+    // q = q_0 + A cos(theta), theta = omega t + phi
+    q = offset_ + amplitude_*c;
+
+    // qDot = -A omega sin(theta)
+    qDot = -amplitude_*omega_*s;
+
+    // qDdot = -A omega^2 cos(theta)
+    qDdot = -amplitude_*omega_*omega_*c;
+}
+
+
+void Foam::imposedMotions::harmonic::write(Ostream& os) const
+{
+    imposedMotion::write(os);
+
+    os.writeEntry("amplitude", amplitude_);
+    os.writeEntry("frequency", frequency_);
+    os.writeEntry("phase", phase_);
+    os.writeEntry("offset", offset_);
+}
+
+
+// ************************************************************************* //

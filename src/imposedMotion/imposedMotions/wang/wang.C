@@ -1,0 +1,93 @@
+/*---------------------------------------------------------------------------*\
+  flapFoam: free-flight simulation of flapping-wing drones on OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "wang.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace imposedMotions
+{
+    defineTypeNameAndDebug(wang, 0);
+    addToRunTimeSelectionTable(imposedMotion, wang, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::imposedMotions::wangWaveform
+Foam::imposedMotions::wang::readWaveform(const dictionary& dict)
+{
+    const wangWaveform::shape waveform
+    (
+        wangWaveform::readShape(dict, "waveform")
+    );
+
+    const scalar amplitude = dict.get<scalar>("amplitude");
+    const scalar frequency = getPositive(dict, "frequency");
+
+    const scalar K = dict.get<scalar>("K");
+    wangWaveform::checkK(dict, "K", waveform, K);
+
+    return wangWaveform
+    (
+        waveform,
+        amplitude,
+        frequency,
+        K,
+        dict.getOrDefault<scalar>("phase", 0),
+        dict.getOrDefault<scalar>("offset", 0)
+    );
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::imposedMotions::wang::wang
+(
+    const word& name,
+    const dictionary& dict
+)
+:
+    imposedMotion(name, dict),
+    waveform_(readWaveform(dict))
+{}
+
+
+// * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * * //
+
+void Foam::imposedMotions::wang::evaluate
+(
+    const label,
+    const scalar t,
+    scalar& q,
+    scalar& qDot,
+    scalar& qDdot
+) const
+{
+    waveform_.evaluate(t, q, qDot, qDdot);
+}
+
+
+void Foam::imposedMotions::wang::write(Ostream& os) const
+{
+    imposedMotion::write(os);
+
+    os.writeEntry
+    (
+        "waveform",
+        wangWaveform::shapeNames[waveform_.waveform()]
+    );
+    os.writeEntry("amplitude", waveform_.amplitude());
+    os.writeEntry("frequency", waveform_.frequency());
+    os.writeEntry("K", waveform_.K());
+    os.writeEntry("phase", waveform_.phase());
+    os.writeEntry("offset", waveform_.offset());
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,170 @@
+/*---------------------------------------------------------------------------*\
+  flapFoam: free-flight simulation of flapping-wing drones on OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "wangWaveform.H"
+#include "mathematicalConstants.H"
+#include "StringStream.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::imposedMotions::wangWaveform::shape>
+Foam::imposedMotions::wangWaveform::shapeNames
+({
+    { shape::flapping, "flapping" },
+    { shape::pitching, "pitching" },
+});
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::imposedMotions::wangWaveform::wangWaveform
+(
+    const shape waveform,
+    const scalar amplitude,
+    const scalar frequency,
+    const scalar K,
+    const scalar phase,
+    const scalar offset
+)
+:
+    shape_(waveform),
+    amplitude_(amplitude),
+    frequency_(frequency),
+    K_(K),
+    phase_(phase),
+    offset_(offset),
+    omega_(constant::mathematical::twoPi*frequency),
+    S_
+    (
+        waveform == shape::flapping
+      ? amplitude/::asin(K)
+      : amplitude/::tanh(K)
+    )
+{}
+
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+Foam::imposedMotions::wangWaveform::shape
+Foam::imposedMotions::wangWaveform::readShape
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const word name(dict.get<word>(key));
+
+    if (!shapeNames.found(name))
+    {
+        OStringStream allowed;
+        for (const word& n : shapeNames.names())
+        {
+            allowed << ' ' << n;
+        }
+
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' = " << name
+            << " is not a valid waveform: allowed" << allowed.str().c_str()
+            << nl << exit(FatalIOError);
+    }
+
+    return shapeNames.get(name);
+}
+
+
+void Foam::imposedMotions::wangWaveform::checkK
+(
+    const dictionary& dict,
+    const word& key,
+    const shape waveform,
+    const scalar K
+)
+{
+    if (waveform == shape::flapping)
+    {
+        // asin(K cos(theta))/asin(K): needs 0 < K < 1
+        if (!(K > 0 && K < 1))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry '" << key << "' = " << K
+                << " is out of range for the flapping waveform:"
+                << " allowed 0 < " << key << " < 1" << nl
+                << exit(FatalIOError);
+        }
+    }
+    else
+    {
+        // tanh(K sin(theta))/tanh(K): needs K > 0
+        if (!(K > 0))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry '" << key << "' = " << K
+                << " is out of range for the pitching waveform:"
+                << " allowed " << key << " > 0" << nl
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * * //
+
+void Foam::imposedMotions::wangWaveform::evaluate
+(
+    const scalar t,
+    scalar& q,
+    scalar& qDot,
+    scalar& qDdot
+) const
+{
+    const scalar theta = omega_*t + phase_;
+    const scalar c = ::cos(theta);
+    const scalar s = ::sin(theta);
+
+    if (shape_ == shape::flapping)
+    {
+        // u = K cos(theta), u' = -K omega sin(theta), u'' = -omega^2 u
+        const scalar u = K_*c;
+        const scalar du = -K_*omega_*s;
+        const scalar ddu = -omega_*omega_*u;
+
+        // 1 - u^2 >= 1 - K^2 > 0
+        const scalar oneMinusU2 = 1 - u*u;
+        const scalar invRoot = 1/::sqrt(oneMinusU2);
+
+        // q = q_0 + S asin(u)
+        q = offset_ + S_*::asin(u);
+
+        // qDot = S u'/sqrt(1 - u^2)
+        qDot = S_*du*invRoot;
+
+        // qDdot = S/sqrt(1 - u^2) (u'' + u u'^2/(1 - u^2))
+        qDdot = S_*invRoot*(ddu + u*du*du/oneMinusU2);
+    }
+    else
+    {
+        // v = K sin(theta), v' = K omega cos(theta), v'' = -omega^2 v
+        const scalar v = K_*s;
+        const scalar dv = K_*omega_*c;
+        const scalar ddv = -omega_*omega_*v;
+
+        // sech^2 from cosh, not 1 - tanh^2: accurate where tanh(v) ~ 1
+        // (large K); cosh overflowing to inf gives sech^2 = 0, as it should
+        const scalar th = ::tanh(v);
+        const scalar sech = 1/::cosh(v);
+        const scalar sech2 = sech*sech;
+
+        // q = q_0 + S tanh(v)
+        q = offset_ + S_*th;
+
+        // qDot = S v' sech^2(v)
+        qDot = S_*dv*sech2;
+
+        // qDdot = S sech^2(v) (v'' - 2 tanh(v) v'^2)
+        qDdot = S_*sech2*(ddv - 2*th*dv*dv);
+    }
+}
+
+
+// ************************************************************************* //

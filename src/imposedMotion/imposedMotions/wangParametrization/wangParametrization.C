@@ -1,0 +1,176 @@
+/*---------------------------------------------------------------------------*\
+  flapFoam: free-flight simulation of flapping-wing drones on OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "wangParametrization.H"
+#include "mathematicalConstants.H"
+#include "StringStream.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace imposedMotions
+{
+    defineTypeNameAndDebug(wangParametrization, 0);
+    addToRunTimeSelectionTable(imposedMotion, wangParametrization, dictionary);
+}
+}
+
+
+const Foam::Enum<Foam::imposedMotions::wangParametrization::motionType>
+Foam::imposedMotions::wangParametrization::motionTypeNames
+({
+    { motionType::standard, "standard" },
+    { motionType::midStart, "midStart" },
+});
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::labelList Foam::imposedMotions::wangParametrization::readJointList
+(
+    const dictionary& dict
+)
+{
+    const labelList joints(dict.get<labelList>("jointList"));
+
+    if (joints.size() != 2)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'jointList' has " << joints.size()
+            << " entries: it must have exactly 2 (flapping joint,"
+            << " pitching joint)" << nl
+            << exit(FatalIOError);
+    }
+
+    return joints;
+}
+
+
+Foam::imposedMotions::wangParametrization::motionType
+Foam::imposedMotions::wangParametrization::readMotionType
+(
+    const dictionary& dict
+)
+{
+    const word name
+    (
+        dict.getOrDefault<word>
+        (
+            "motionType",
+            motionTypeNames[motionType::standard]
+        )
+    );
+
+    if (!motionTypeNames.found(name))
+    {
+        OStringStream allowed;
+        for (const word& n : motionTypeNames.names())
+        {
+            allowed << ' ' << n;
+        }
+
+        FatalIOErrorInFunction(dict)
+            << "Entry 'motionType' = " << name
+            << " is not a valid motion type: allowed" << allowed.str().c_str()
+            << nl << exit(FatalIOError);
+    }
+
+    return motionTypeNames.get(name);
+}
+
+
+Foam::imposedMotions::wangWaveform
+Foam::imposedMotions::wangParametrization::readPhi
+(
+    const dictionary& dict,
+    const motionType type
+)
+{
+    const scalar A = dict.get<scalar>("Aphi");
+    const scalar f = getPositive(dict, "fphi");
+    const scalar K = dict.get<scalar>("Kphi");
+    wangWaveform::checkK(dict, "Kphi", wangWaveform::shape::flapping, K);
+
+    // standard: cos(theta); midStart: sin(theta) = cos(theta - pi/2)
+    const scalar phase =
+        type == motionType::midStart ? -constant::mathematical::piByTwo : 0;
+
+    return wangWaveform(wangWaveform::shape::flapping, A, f, K, phase);
+}
+
+
+Foam::imposedMotions::wangWaveform
+Foam::imposedMotions::wangParametrization::readAlpha
+(
+    const dictionary& dict,
+    const motionType type
+)
+{
+    const scalar A = dict.get<scalar>("Aalpha");
+    const scalar f = getPositive(dict, "falpha");
+    const scalar K = dict.get<scalar>("Kalpha");
+    wangWaveform::checkK(dict, "Kalpha", wangWaveform::shape::pitching, K);
+
+    // standard: sin(theta); midStart: cos(theta) = sin(theta + pi/2)
+    const scalar phase =
+        type == motionType::midStart ? constant::mathematical::piByTwo : 0;
+
+    return wangWaveform(wangWaveform::shape::pitching, A, f, K, phase);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::imposedMotions::wangParametrization::wangParametrization
+(
+    const word& name,
+    const dictionary& dict
+)
+:
+    imposedMotion(name, dict, readJointList(dict)),
+    motionType_(readMotionType(dict)),
+    phi_(readPhi(dict, motionType_)),
+    alpha_(readAlpha(dict, motionType_))
+{}
+
+
+// * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * * //
+
+void Foam::imposedMotions::wangParametrization::evaluate
+(
+    const label i,
+    const scalar t,
+    scalar& q,
+    scalar& qDot,
+    scalar& qDdot
+) const
+{
+    if (i == 0)
+    {
+        phi_.evaluate(t, q, qDot, qDdot);
+    }
+    else
+    {
+        alpha_.evaluate(t, q, qDot, qDdot);
+    }
+}
+
+
+void Foam::imposedMotions::wangParametrization::write(Ostream& os) const
+{
+    imposedMotion::write(os);
+
+    os.writeEntry("motionType", motionTypeNames[motionType_]);
+    os.writeEntry("Aphi", phi_.amplitude());
+    os.writeEntry("fphi", phi_.frequency());
+    os.writeEntry("Kphi", phi_.K());
+    os.writeEntry("Aalpha", alpha_.amplitude());
+    os.writeEntry("falpha", alpha_.frequency());
+    os.writeEntry("Kalpha", alpha_.K());
+}
+
+
+// ************************************************************************* //
