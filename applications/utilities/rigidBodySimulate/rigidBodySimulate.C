@@ -20,7 +20,8 @@ Description
       - system/controlDict: startTime, endTime, deltaT, writeControl and
         writeInterval;
       - <startTime>/uniform/rigidBodyMotionState when present: the initial
-        q, qDot (and qDdot) lists; zero otherwise.
+        q, qDot (and qDdot) lists; zero otherwise.  Without qDdot the
+        initial accelerations are computed from the state.
 
     Writes
       - the q-index -> body/joint map to the log;
@@ -104,7 +105,6 @@ int main(int argc, char *argv[])
         " gravity and restraints only."
     );
     argList::noParallel();
-    argList::noFunctionObjects();
 
     #include "setRootCase.H"
     #include "createTime.H"
@@ -162,11 +162,12 @@ int main(int argc, char *argv[])
     const Field<spatialVector> fx(model.nBodies(), Zero);
 
     // Consistent state at the start: exact prescribed joints, free
-    // accelerations and the prescribed joints' forces.  On a restart the
-    // stored accelerations are kept (the next step starts from them) and
-    // only the forces are evaluated.
+    // accelerations and the prescribed joints' forces.  A restart keeps the
+    // stored accelerations (the next step starts from them, as a run that
+    // did not stop) and only evaluates the forces; a state without qDdot
+    // gets consistent accelerations.
     model.state().t() = runTime.value();
-    if (restart)
+    if (stateDict.found("qDdot"))
     {
         RBD::rigidBodyModelState s(model.state());
         model.evaluate(s, tau, fx);
@@ -202,7 +203,11 @@ int main(int argc, char *argv[])
 
     Info<< "Starting time loop" << nl << endl;
 
-    while (runTime.run())
+    // Plain time loop: Time::run() would execute the function objects and
+    // write their state dictionary at every write time
+    const scalar endTime = runTime.endTime().value();
+
+    while (runTime.value() < endTime - 0.5*runTime.deltaTValue())
     {
         ++runTime;
 

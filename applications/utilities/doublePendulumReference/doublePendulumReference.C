@@ -1,0 +1,428 @@
+/*---------------------------------------------------------------------------*\
+  flapFoam: free-flight simulation of flapping-wing drones on OpenFOAM v1912
+-------------------------------------------------------------------------------
+Application
+    doublePendulumReference
+
+Group
+    grpFlapFoamUtilities
+
+Description
+    Independent Lagrangian reference for the double pendulum of Poletti et
+    al. (section 4, validation of the eABA): two massless rods l1, l2 with
+    point masses m1, m2 at their ends, in gravity g, in a vertical plane.
+    Written with Eigen and its own Dormand-Prince 5(4) integrator; it uses
+    none of OpenFOAM's rigid-body or ODE code (only argList and the file
+    streams of libOpenFOAM).
+
+    Coordinates: absolute angles th1, th2 of the rods from the downward
+    vertical; mass positions x_k (horizontal), z_k (up)
+        x1 = l1 sin th1,             z1 = -l1 cos th1
+        x2 = x1 + l2 sin th2,        z2 = z1 - l2 cos th2
+
+    Lagrangian L = T - V:
+        T = 1/2 (m1 + m2) l1^2 th1d^2 + 1/2 m2 l2^2 th2d^2
+          + m2 l1 l2 cos(th1 - th2) th1d th2d
+        V = (m1 + m2) g l1 (1 - cos th1) + m2 g l2 (1 - cos th2)
+    (V = 0 and so E = T + V = 0 at rest hanging down.)
+
+    Lagrange's equations, M(th) thdd + C(th, thd) = Q:
+        M = | (m1 + m2) l1^2         m2 l1 l2 cos(th1-th2) |
+            | m2 l1 l2 cos(th1-th2)  m2 l2^2               |
+        C = |  m2 l1 l2 sin(th1-th2) th2d^2 + (m1 + m2) g l1 sin th1 |
+            | -m2 l1 l2 sin(th1-th2) th1d^2 + m2 g l2 sin th2        |
+
+    Generalised forces: with torque tau1 in joint 1 (ground -> rod 1) and
+    tau2 in joint 2 (rod 1 -> rod 2), the virtual work is
+        tau1 dth1 + tau2 (dth2 - dth1)   so   Q1 = tau1 - tau2, Q2 = tau2.
+    In OpenFOAM's tree the joint coordinates are relative, q0 = th1 and
+    q1 = th2 - th1, and the forces conjugate to (q0, q1) are
+    (Q1 + Q2, Q2) = (tau1, tau2): the same joint torques.
+
+    Mode \c prescribed (joint 1 driven, joint 2 free, tau2 = 0):
+        th1(t)   =  A cos(w t) - A,     w = 2 pi f
+        th1d(t)  = -A w sin(w t)
+        th1dd(t) = -A w^2 cos(w t)                  (exact derivatives)
+      second equation divided by m2 l2 (the paper's reference):
+        l2 th2dd = l1 th1d^2 sin(th1 - th2) - l1 th1dd cos(th1 - th2)
+                 - g sin th2
+      the torque joint 1 needs, the first equation with Q1 = tau1:
+        tau1 = (m1 + m2) l1^2 th1dd + m2 l1 l2 cos(th1 - th2) th2dd
+             + m2 l1 l2 sin(th1 - th2) th2d^2 + (m1 + m2) g l1 sin th1
+      integrated state (th2, th2d, W) with the work of the drive
+        dW/dt = tau1 th1d,  so that E(t) - E(0) = W(t) (checked on output).
+
+    Mode \c free (tau1 = tau2 = 0): state (th1, th2, th1d, th2d),
+        thdd = -M^-1 C   (2x2 Cholesky solve, Eigen);  E is conserved.
+
+    Output file: comment lines starting with '#', among them
+        # parameters l1 .. l2 .. m1 .. m2 .. g .. A .. f .. mode ..
+        # time theta1 theta2 theta2rel theta1Dot theta2Dot theta1Ddot
+          theta2Ddot tau1 E W
+    and one row per output time (t = 0, writeInterval, ..., endTime):
+        theta2rel = th2 - th1 (OpenFOAM's q of joint 2), tau1 [N m] (0 in
+        free mode), E = T + V [J], W = work of tau1 [J] (0 in free mode).
+
+Usage
+    \b doublePendulumReference [OPTION]
+
+    Options (SI units, angles in rad; defaults are the paper's pendulum):
+      - \par -mode prescribed|free (default prescribed)
+      - \par -l1, -l2 (0.1, 0.2), -m1, -m2 (0.5, 0.5), -g (9.81)
+      - \par -A (57 deg = 0.994838 rad), -f (2 Hz)         prescribed mode
+      - \par -theta1, -theta2, -theta1Dot, -theta2Dot (0)  initial state,
+             absolute angles (theta1, theta1Dot: free mode only)
+      - \par -state FILE  initial state from an OpenFOAM
+             rigidBodyMotionState file (relative q, qDot of the two joints);
+             in prescribed mode only q[1], qDot[1] are used
+      - \par -endTime (2), -writeInterval (1e-3)
+      - \par -relTol, -absTol (1e-12, 1e-12)
+      - \par -output FILE (doublePendulumReference.dat)
+
+    Example:
+    \verbatim
+    doublePendulumReference -mode free -state 0/uniform/rigidBodyMotionState \
+        -endTime 2 -output reference/free.dat
+    \endverbatim
+
+\*---------------------------------------------------------------------------*/
+
+#include <Eigen/Core>
+
+#include "argList.H"
+#include "IFstream.H"
+#include "OFstream.H"
+#include "OSspecific.H"
+#include "dictionary.H"
+#include "scalarField.H"
+#include "mathematicalConstants.H"
+#include "Enum.H"
+
+#include "doublePendulum.H"
+#include "dormandPrince45.H"
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+enum class pendulumMode { prescribed, free };
+
+const Enum<pendulumMode> pendulumModeNames
+({
+    { pendulumMode::prescribed, "prescribed" },
+    { pendulumMode::free, "free" },
+});
+
+
+//- Read an option, checking it lies in [minVal, maxVal]
+scalar getOption
+(
+    const argList& args,
+    const word& name,
+    const scalar deflt,
+    const scalar minVal = -GREAT,
+    const scalar maxVal = GREAT
+)
+{
+    const scalar val = args.getOrDefault<scalar>(name, deflt);
+    if (!(val >= minVal && val <= maxVal))
+    {
+        FatalErrorInFunction
+            << "Option -" << name << " = " << val << " must be ";
+        if (minVal == VSMALL && maxVal == GREAT)
+        {
+            FatalError<< "positive";
+        }
+        else
+        {
+            FatalError<< "in [" << minVal << ", " << maxVal << "]";
+        }
+        FatalError<< exit(FatalError);
+    }
+    return val;
+}
+
+
+//- Read q[i], qDot[i] of joint i from an OpenFOAM rigidBodyMotionState
+void readState
+(
+    const fileName& file,
+    scalarField& q,
+    scalarField& qDot
+)
+{
+    IFstream is(file);
+    if (!is.good())
+    {
+        FatalErrorInFunction
+            << "Cannot open state file " << is.name() << exit(FatalError);
+    }
+    const dictionary dict(is);
+
+    q = dict.get<scalarField>("q");
+    qDot = dict.getOrDefault<scalarField>("qDot", scalarField(q.size(), 0));
+
+    if (q.size() != 2 || qDot.size() != 2)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Expected q and qDot of 2 joints, got q " << q
+            << ", qDot " << qDot << exit(FatalIOError);
+    }
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Lagrangian reference solution of the double pendulum"
+        " (Eigen + Dormand-Prince 5(4)); see the source header for the"
+        " equations and the output columns"
+    );
+    argList::noParallel();
+    argList::noFunctionObjects();
+    argList::noCheckProcessorDirectories();
+
+    argList::addOption("mode", "prescribed|free", "default: prescribed");
+    argList::addOption("l1", "m", "rod 1 length (default 0.1)");
+    argList::addOption("l2", "m", "rod 2 length (default 0.2)");
+    argList::addOption("m1", "kg", "mass at the end of rod 1 (default 0.5)");
+    argList::addOption("m2", "kg", "mass at the end of rod 2 (default 0.5)");
+    argList::addOption("g", "m/s^2", "gravity (default 9.81)");
+    argList::addOption("A", "rad", "drive amplitude (default 57 deg)");
+    argList::addOption("f", "Hz", "drive frequency (default 2)");
+    argList::addOption("theta1", "rad", "initial th1, free mode (0)");
+    argList::addOption("theta2", "rad", "initial th2, absolute (0)");
+    argList::addOption("theta1Dot", "rad/s", "initial th1d, free mode (0)");
+    argList::addOption("theta2Dot", "rad/s", "initial th2d, absolute (0)");
+    argList::addOption
+    (
+        "state",
+        "file",
+        "initial state from a rigidBodyMotionState (relative q, qDot)"
+    );
+    argList::addOption("endTime", "s", "end time (default 2)");
+    argList::addOption("writeInterval", "s", "output interval (1e-3)");
+    argList::addOption("relTol", "value", "relative tolerance (1e-12)");
+    argList::addOption("absTol", "value", "absolute tolerance (1e-12)");
+    argList::addOption("output", "file", "(doublePendulumReference.dat)");
+
+    argList args(argc, argv);
+
+    // Read every option first
+
+    const pendulumMode mode =
+        pendulumModeNames.get(args.getOrDefault<word>("mode", "prescribed"));
+    const bool prescribed = (mode == pendulumMode::prescribed);
+
+    const scalar l1 = getOption(args, "l1", 0.1, VSMALL);
+    const scalar l2 = getOption(args, "l2", 0.2, VSMALL);
+    const scalar m1 = getOption(args, "m1", 0.5, 0);
+    const scalar m2 = getOption(args, "m2", 0.5, VSMALL);
+    const scalar g = getOption(args, "g", 9.81);
+    const scalar A =
+        getOption(args, "A", 57*constant::mathematical::pi/180);
+    const scalar f = getOption(args, "f", 2, 0);
+    const scalar endTime = getOption(args, "endTime", 2, VSMALL);
+    const scalar writeInterval =
+        getOption(args, "writeInterval", 1e-3, VSMALL);
+    const scalar relTol = getOption(args, "relTol", 1e-12, 0, 1);
+    const scalar absTol = getOption(args, "absTol", 1e-12, 0, 1);
+    const fileName output =
+        args.getOrDefault<fileName>("output", "doublePendulumReference.dat");
+
+    if (relTol <= 0 && absTol <= 0)
+    {
+        FatalErrorInFunction
+            << "-relTol and -absTol cannot both be 0" << exit(FatalError);
+    }
+
+    const scalar omega = constant::mathematical::twoPi*f;
+
+    // Prescribed motion of joint 1 with exact derivatives
+    auto drive = [A, omega](const scalar t, scalar& th, scalar& thd, scalar& thdd)
+    {
+        th = A*std::cos(omega*t) - A;
+        thd = -A*omega*std::sin(omega*t);
+        thdd = -A*omega*omega*std::cos(omega*t);
+    };
+
+    // Initial state (absolute angles)
+    scalar th10 = 0, th1d0 = 0, th20 = 0, th2d0 = 0;
+    if (prescribed)
+    {
+        scalar th1dd0;
+        drive(0, th10, th1d0, th1dd0);
+    }
+
+    if (args.found("state"))
+    {
+        scalarField q, qDot;
+        readState(args.get<fileName>("state"), q, qDot);
+        if (!prescribed)
+        {
+            th10 = q[0];
+            th1d0 = qDot[0];
+        }
+        th20 = th10 + q[1];
+        th2d0 = th1d0 + qDot[1];
+    }
+    if (!prescribed)
+    {
+        args.readIfPresent("theta1", th10);
+        args.readIfPresent("theta1Dot", th1d0);
+    }
+    else if (args.found("theta1") || args.found("theta1Dot"))
+    {
+        FatalErrorInFunction
+            << "-theta1/-theta1Dot are set by the drive in prescribed mode"
+            << exit(FatalError);
+    }
+    args.readIfPresent("theta2", th20);
+    args.readIfPresent("theta2Dot", th2d0);
+
+
+    const doublePendulum model(l1, l2, m1, m2, g);
+    typedef doublePendulum::vector2 vector2;
+    typedef dormandPrince45::vector vectorN;
+
+    // Right-hand sides
+
+    // prescribed: y = (th2, th2d, W)
+    auto rhsPrescribed =
+        [&model, &drive](const scalar t, const vectorN& y, vectorN& dydt)
+    {
+        scalar th1, th1d, th1dd;
+        drive(t, th1, th1d, th1dd);
+        const vector2 th(th1, y(0));
+        const scalar th2dd = model.theta2Ddot(th, th1d, th1dd);
+        const scalar tau1 =
+            model.tau1(th, vector2(th1d, y(1)), vector2(th1dd, th2dd));
+        dydt(0) = y(1);
+        dydt(1) = th2dd;
+        dydt(2) = tau1*th1d;
+    };
+
+    // free: y = (th1, th2, th1d, th2d)
+    auto rhsFree = [&model](const scalar, const vectorN& y, vectorN& dydt)
+    {
+        const vector2 thdd =
+            model.freeAcceleration(y.head<2>(), y.tail<2>());
+        dydt.head<2>() = y.tail<2>();
+        dydt.tail<2>() = thdd;
+    };
+
+    vectorN y;
+    if (prescribed)
+    {
+        y.resize(3);
+        y << th20, th2d0, 0;
+    }
+    else
+    {
+        y.resize(4);
+        y << th10, th20, th1d0, th2d0;
+    }
+
+    // Output
+
+    if (!output.path().empty() && !isDir(output.path()))
+    {
+        mkDir(output.path());
+    }
+    OFstream os(output);
+    if (!os.good())
+    {
+        FatalErrorInFunction
+            << "Cannot open " << output << " for writing" << exit(FatalError);
+    }
+    os.precision(16);
+
+    os  << "# doublePendulumReference: Lagrangian double pendulum,"
+        << " Dormand-Prince 5(4), relTol " << relTol << " absTol " << absTol
+        << nl
+        << "# angles from the downward vertical [rad]; theta2 absolute,"
+        << " theta2rel = theta2 - theta1; tau1 [N m]; E, W [J]" << nl
+        << "# parameters mode " << pendulumModeNames[mode]
+        << " l1 " << l1 << " l2 " << l2 << " m1 " << m1 << " m2 " << m2
+        << " g " << g << " A " << (prescribed ? A : 0)
+        << " f " << (prescribed ? f : 0) << nl
+        << "# time theta1 theta2 theta2rel theta1Dot theta2Dot theta1Ddot"
+        << " theta2Ddot tau1 E W" << nl;
+
+    scalar E0 = 0;
+    scalar maxEnergyError = 0;
+
+    auto writeRow = [&](const scalar t)
+    {
+        vector2 th, thd, thdd;
+        scalar tau1 = 0, W = 0;
+        if (prescribed)
+        {
+            drive(t, th(0), thd(0), thdd(0));
+            th(1) = y(0);
+            thd(1) = y(1);
+            thdd(1) = model.theta2Ddot(th, thd(0), thdd(0));
+            tau1 = model.tau1(th, thd, thdd);
+            W = y(2);
+        }
+        else
+        {
+            th = y.head<2>();
+            thd = y.tail<2>();
+            thdd = model.freeAcceleration(th, thd);
+        }
+        const scalar E = model.energy(th, thd);
+        if (t == 0)
+        {
+            E0 = E;
+        }
+        maxEnergyError = std::max(maxEnergyError, std::abs(E - E0 - W));
+
+        os  << t << ' ' << th(0) << ' ' << th(1) << ' ' << th(1) - th(0)
+            << ' ' << thd(0) << ' ' << thd(1)
+            << ' ' << thdd(0) << ' ' << thdd(1)
+            << ' ' << tau1 << ' ' << E << ' ' << W << nl;
+    };
+
+    dormandPrince45 solver(relTol, absTol);
+
+    const label nWrite = std::ceil(endTime/writeInterval - 1e-9);
+    writeRow(0);
+    scalar t = 0;
+    for (label i = 1; i <= nWrite; ++i)
+    {
+        const scalar tNext = std::min(i*writeInterval, endTime);
+        if (prescribed)
+        {
+            solver.integrate(rhsPrescribed, t, tNext, y);
+        }
+        else
+        {
+            solver.integrate(rhsFree, t, tNext, y);
+        }
+        t = tNext;
+        writeRow(t);
+    }
+
+    Info<< "Mode " << pendulumModeNames[mode] << ": " << nWrite + 1
+        << " rows written to " << output << nl
+        << "Dormand-Prince 5(4): " << solver.nAccepted() << " steps, "
+        << solver.nRejected() << " rejected, " << solver.nEval()
+        << " evaluations" << nl
+        << "Energy balance max |E - E0 - W| = " << maxEnergyError
+        << " J (E0 = " << E0 << " J)" << nl
+        << "\nEnd\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //
