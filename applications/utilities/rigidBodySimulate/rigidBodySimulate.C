@@ -47,27 +47,6 @@ using namespace Foam;
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
-//- One row of joints.dat: time, q qDot qDdot per joint, tau power per
-//- prescribed joint
-void writeRow(OFstream& os, const RBD::eABAMotion& model)
-{
-    const RBD::rigidBodyModelState& s = model.state();
-
-    os  << s.t();
-    forAll(s.q(), qi)
-    {
-        os  << ' ' << s.q()[qi] << ' ' << s.qDot()[qi] << ' ' << s.qDdot()[qi];
-    }
-
-    const scalarField power(model.prescribedPower(s));
-    forAll(power, pi)
-    {
-        os  << ' ' << model.prescribedTau()[pi] << ' ' << power[pi];
-    }
-    os  << endl;
-}
-
-
 //- Write the state to <time>/uniform/rigidBodyMotionState
 void writeState(const Time& runTime, const RBD::eABAMotion& model)
 {
@@ -188,18 +167,8 @@ int main(int argc, char *argv[])
     OFstream os(outputDir/"joints.dat");
     os.precision(15);
 
-    os  << "# time";
-    for (label qi = 0; qi < model.nDoF(); ++qi)
-    {
-        os  << " q_" << qi << " qDot_" << qi << " qDdot_" << qi;
-    }
-    for (const label qi : model.prescribed())
-    {
-        os  << " tau_" << qi << " power_" << qi;
-    }
-    os  << endl;
-
-    writeRow(os, model);
+    model.writeJointsHeader(os);
+    model.writeJointsRow(os);
 
     Info<< "Starting time loop" << nl << endl;
 
@@ -219,7 +188,7 @@ int main(int argc, char *argv[])
 
         if (runTime.writeTime())
         {
-            writeRow(os, model);
+            model.writeJointsRow(os);
             Info<< "Time = " << runTime.timeName()
                 << "  q = " << model.state().q() << endl;
         }

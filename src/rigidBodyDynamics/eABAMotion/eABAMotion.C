@@ -271,6 +271,40 @@ void Foam::RBD::eABAMotion::status(const label bodyID) const
 }
 
 
+void Foam::RBD::eABAMotion::writeJointsHeader(Ostream& os) const
+{
+    os  << "# time";
+    for (label qi = 0; qi < nDoF(); ++qi)
+    {
+        os  << " q_" << qi << " qDot_" << qi << " qDdot_" << qi;
+    }
+    for (const label qi : prescribed())
+    {
+        os  << " tau_" << qi << " power_" << qi;
+    }
+    os  << endl;
+}
+
+
+void Foam::RBD::eABAMotion::writeJointsRow(Ostream& os) const
+{
+    const rigidBodyModelState& s = motionState_;
+
+    os  << s.t();
+    forAll(s.q(), qi)
+    {
+        os  << ' ' << s.q()[qi] << ' ' << s.qDot()[qi] << ' ' << s.qDdot()[qi];
+    }
+
+    forAll(prescribed(), pi)
+    {
+        const scalar tau = prescribedTau()[pi];
+        os  << ' ' << tau << ' ' << tau*s.qDot()[prescribed()[pi]];
+    }
+    os  << endl;
+}
+
+
 void Foam::RBD::eABAMotion::write(Ostream& os) const
 {
     eABAModel::write(os);
