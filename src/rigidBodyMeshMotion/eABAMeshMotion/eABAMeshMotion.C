@@ -438,6 +438,7 @@ Foam::eABAMeshMotion::eABAMeshMotion
 
     model_.writeJointMap(Info);
     openOutput();
+    writeOutput();
 }
 
 

@@ -12,6 +12,8 @@ namespace Foam
     defineTypeNameAndDebug(stepTimers, 0);
 }
 
+const Foam::word Foam::stepTimers::meshUpdated("meshUpdated");
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -50,10 +52,32 @@ Foam::stepTimers& Foam::stepTimers::New(const objectRegistry& db)
 }
 
 
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::stepTimers::close(const word& part, const scalar elapsed)
+{
+    const scalar inside = open_.remove();
+
+    // The enclosing scope (if any) sees the whole elapsed time as nested:
+    // the part inside it now, the rest in add() below
+    if (open_.size())
+    {
+        open_.last() += inside;
+    }
+
+    add(part, elapsed - inside);
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::stepTimers::add(const word& part, const scalar s)
 {
+    if (open_.size())
+    {
+        open_.last() += s;
+    }
+
     auto iter = seconds_.find(part);
 
     if (iter.found())
@@ -68,12 +92,32 @@ void Foam::stepTimers::add(const word& part, const scalar s)
 }
 
 
+Foam::stepTimers::clock::time_point Foam::stepTimers::stampTime
+(
+    const word& name
+) const
+{
+    const auto iter = stamps_.cfind(name);
+
+    if (!iter.found())
+    {
+        FatalErrorInFunction
+            << "No time stamp " << name << " in this step; stamps: "
+            << stamps_.sortedToc() << exit(FatalError);
+    }
+
+    return *iter;
+}
+
+
 void Foam::stepTimers::reset()
 {
     forAllIters(seconds_, iter)
     {
         *iter = 0;
     }
+
+    stamps_.clear();
 }
 
 
