@@ -12,6 +12,8 @@ namespace Foam
     defineTypeNameAndDebug(stepTimers, 0);
 }
 
+const Foam::word Foam::stepTimers::meshUpdateStart("meshUpdateStart");
+
 const Foam::word Foam::stepTimers::meshUpdated("meshUpdated");
 
 

@@ -1,0 +1,580 @@
+/*---------------------------------------------------------------------------*\
+  flapFoam: free-flight simulation of flapping-wing drones on OpenFOAM v1912
+-------------------------------------------------------------------------------
+Application
+    flapFoamTest-stepTimers
+
+Description
+    GoogleTest unit tests of libflapFoamStepTimers:
+      - the registry: a scope adds its elapsed time (a 20 ms sleep gives
+        0.02 s), parts stay in the order of first use, reset zeroes the
+        parts and clears the stamps but keeps the names, New returns the
+        same object for the Time database and any registry on it, nested
+        scopes and adds inside a scope are exclusive, stamps;
+      - the function object on a plain time loop (no mesh): the header and
+        columns of stepTimers.dat, rbd + overset + pimple within 5 % of
+        total in every step (and with preUpdate equal to it), a part first
+        used later adds a header line, pimple = total without the mesh
+        update stamps, the summary file, a bad key.
+
+    Sleeps are timed against loose upper bounds: the machine may be shared.
+
+\*---------------------------------------------------------------------------*/
+
+#include "stepTimers.H"
+#include "stepTimersFunctionObject.H"
+#include "Time.H"
+#include "OSspecific.H"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * * Helpers * * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Slack on a sleep: the thread may wake late on a busy machine
+const scalar slack = 0.03;
+
+//- The temporary case directories, removed at the end
+std::vector<fileName> tmpCaseDirs;
+
+
+void sleepMs(const int ms)
+{
+    std::this_thread::sleep_for(std::chrono::milliseconds(ms));
+}
+
+
+//- A Time database in a new temporary case directory, from an in-memory
+//- controlDict (with function objects if functions is not empty)
+std::unique_ptr<Time> makeTime
+(
+    const label nSteps,
+    const dictionary& functions = dictionary()
+)
+{
+    char tmpl[] = "/tmp/flapFoamTest-stepTimers-XXXXXX";
+    const char* dir = mkdtemp(tmpl);
+    if (!dir)
+    {
+        std::abort();
+    }
+
+    dictionary controlDict;
+    controlDict.add("startTime", 0);
+    controlDict.add("endTime", nSteps);
+    controlDict.add("deltaT", 1);
+    controlDict.add("writeControl", "timeStep");
+    controlDict.add("writeInterval", 1000);
+    if (functions.size())
+    {
+        controlDict.add("functions", functions);
+    }
+
+    const fileName caseDir(dir);
+    tmpCaseDirs.push_back(caseDir);
+
+    return std::unique_ptr<Time>
+    (
+        new Time
+        (
+            controlDict,
+            caseDir.path(),
+            caseDir.name(),
+            "system",
+            "constant",
+            functions.size() > 0,   // function objects
+            false                   // no libs: linked in
+        )
+    );
+}
+
+
+//- The functions dictionary with one stepTimers function object
+dictionary stepTimersFunctions(const label nStartup)
+{
+    dictionary fo;
+    fo.add("type", "stepTimers");
+    fo.add("nStartup", nStartup);
+
+    dictionary functions;
+    functions.add("stepTimers", fo);
+    return functions;
+}
+
+
+//- A file's lines
+std::vector<std::string> readLines(const fileName& name)
+{
+    std::ifstream is(name);
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(is, line);)
+    {
+        lines.push_back(line);
+    }
+    return lines;
+}
+
+
+//- Whitespace-separated words of a line
+std::vector<std::string> split(const std::string& line)
+{
+    std::istringstream is(line);
+    std::vector<std::string> words;
+    for (std::string w; is >> w;)
+    {
+        words.push_back(w);
+    }
+    return words;
+}
+
+
+//- Column headers ('# time ...' lines, without the '#') and data rows of
+//- a stepTimers.dat
+struct datFile
+{
+    std::vector<std::vector<std::string>> headers;
+    std::vector<std::vector<double>> rows;
+    std::vector<size_t> headerOfRow;
+
+    explicit datFile(const fileName& name)
+    {
+        for (const std::string& line : readLines(name))
+        {
+            std::vector<std::string> w = split(line);
+            if (w.empty())
+            {
+                continue;
+            }
+            if (w[0] == "#")
+            {
+                if (w.size() > 1 && w[1] == "time")
+                {
+                    headers.emplace_back(w.begin() + 1, w.end());
+                }
+                continue;
+            }
+            std::vector<double> row;
+            for (const std::string& s : w)
+            {
+                row.push_back(std::stod(s));
+            }
+            rows.push_back(row);
+            headerOfRow.push_back(headers.size() - 1);
+        }
+    }
+
+    //- Value of a named column in a row
+    double operator()(const size_t rowi, const std::string& column) const
+    {
+        const std::vector<std::string>& h = headers.at(headerOfRow[rowi]);
+        for (size_t i = 0; i < h.size(); ++i)
+        {
+            if (h[i] == column)
+            {
+                return rows[rowi].at(i);
+            }
+        }
+        ADD_FAILURE() << "no column " << column;
+        return 0;
+    }
+};
+
+
+//- The output folder of the function object of a Time
+fileName outputDir(const Time& runTime)
+{
+    return runTime.globalPath()/"postProcessing"/"stepTimers"/"0";
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Registry * * * * * * * * * * * * * * * * //
+
+TEST(stepTimersRegistry, scopeAddsElapsedTime)
+{
+    std::unique_ptr<Time> runTime(makeTime(1));
+    stepTimers& timers = stepTimers::New(*runTime);
+
+    {
+        stepTimers::scope timer(timers, "rbd");
+        sleepMs(20);
+    }
+
+    EXPECT_GE(timers["rbd"], 0.02);
+    EXPECT_LT(timers["rbd"], 0.02 + slack);
+
+    // A second scope adds to the part
+    {
+        stepTimers::scope timer(timers, "rbd");
+        sleepMs(20);
+    }
+
+    EXPECT_GE(timers["rbd"], 0.04);
+    EXPECT_LT(timers["rbd"], 0.04 + 2*slack);
+    EXPECT_EQ(timers["never"], 0);
+    EXPECT_EQ(timers.nOpen(), 0);
+}
+
+
+TEST(stepTimersRegistry, partsInOrderOfFirstUse)
+{
+    std::unique_ptr<Time> runTime(makeTime(1));
+    stepTimers& timers = stepTimers::New(*runTime);
+
+    timers.add("pimple", 1);
+    timers.add("overset", 2);
+    timers.add("pimple", 3);
+    timers.add("rbd", 0);
+    {
+        stepTimers::scope timer(timers, "overset");
+    }
+
+    const wordList expected({"pimple", "overset", "rbd"});
+    ASSERT_EQ(timers.parts().size(), expected.size());
+    forAll(expected, i)
+    {
+        EXPECT_EQ(timers.parts()[i], expected[i]);
+    }
+    EXPECT_EQ(timers["pimple"], 4);
+    EXPECT_GE(timers["overset"], 2);
+    EXPECT_EQ(timers["rbd"], 0);
+}
+
+
+TEST(stepTimersRegistry, resetZeroesPartsAndClearsStamps)
+{
+    std::unique_ptr<Time> runTime(makeTime(1));
+    stepTimers& timers = stepTimers::New(*runTime);
+
+    timers.add("a", 1.5);
+    timers.add("b", 2.5);
+    timers.stamp("meshUpdated");
+    ASSERT_TRUE(timers.stamped("meshUpdated"));
+
+    timers.reset();
+
+    ASSERT_EQ(timers.parts().size(), 2);
+    EXPECT_EQ(timers.parts()[0], "a");
+    EXPECT_EQ(timers.parts()[1], "b");
+    EXPECT_EQ(timers["a"], 0);
+    EXPECT_EQ(timers["b"], 0);
+    EXPECT_FALSE(timers.stamped("meshUpdated"));
+
+    timers.add("a", 1);
+    EXPECT_EQ(timers["a"], 1);
+}
+
+
+TEST(stepTimersRegistry, newReturnsTheSameObject)
+{
+    std::unique_ptr<Time> runTime(makeTime(1));
+
+    stepTimers& a = stepTimers::New(*runTime);
+    stepTimers& b = stepTimers::New(*runTime);
+    EXPECT_EQ(&a, &b);
+
+    // A registry on the Time database (as a mesh is) gives the Time's
+    objectRegistry sub
+    (
+        IOobject("sub", runTime->timeName(), *runTime)
+    );
+    EXPECT_EQ(&stepTimers::New(sub), &a);
+
+    a.add("rbd", 1);
+    EXPECT_EQ(stepTimers::New(sub)["rbd"], 1);
+
+    // Another Time database has its own
+    std::unique_ptr<Time> other(makeTime(1));
+    EXPECT_NE(&stepTimers::New(*other), &a);
+    EXPECT_EQ(stepTimers::New(*other)["rbd"], 0);
+}
+
+
+TEST(stepTimersRegistry, nestedScopesAreExclusive)
+{
+    std::unique_ptr<Time> runTime(makeTime(1));
+    stepTimers& timers = stepTimers::New(*runTime);
+
+    const auto start = stepTimers::clock::now();
+    {
+        stepTimers::scope outer(timers, "oversetMovePoints");
+        sleepMs(10);
+        {
+            stepTimers::scope inner(timers, "rbd");
+            sleepMs(20);
+            {
+                stepTimers::scope innermost(timers, "rbdForces");
+                sleepMs(10);
+            }
+            EXPECT_EQ(timers.nOpen(), 2);
+        }
+        timers.add("oversetStencil", 0.005);   // counts as nested too
+    }
+    const scalar elapsed =
+        stepTimers::seconds(start, stepTimers::clock::now());
+
+    EXPECT_EQ(timers.nOpen(), 0);
+
+    EXPECT_GE(timers["rbdForces"], 0.01);
+    EXPECT_LT(timers["rbdForces"], 0.01 + slack);
+    EXPECT_GE(timers["rbd"], 0.02);
+    EXPECT_LT(timers["rbd"], 0.02 + slack);
+    EXPECT_GE(timers["oversetMovePoints"], 0.01 - 0.005);
+    EXPECT_LT(timers["oversetMovePoints"], 0.01 - 0.005 + slack);
+
+    // The parts add up to the outer scope
+    const scalar sum =
+        timers["rbdForces"] + timers["rbd"] + timers["oversetStencil"]
+      + timers["oversetMovePoints"];
+    EXPECT_NEAR(sum, elapsed, 1e-3);
+
+    // Outside any scope an add does not nest
+    timers.add("pimple", 1);
+    EXPECT_EQ(timers.nOpen(), 0);
+}
+
+
+TEST(stepTimersRegistry, stamps)
+{
+    std::unique_ptr<Time> runTime(makeTime(1));
+    stepTimers& timers = stepTimers::New(*runTime);
+
+    EXPECT_FALSE(timers.stamped(stepTimers::meshUpdated));
+    EXPECT_THROW(timers.stampTime(stepTimers::meshUpdated), Foam::error);
+
+    const auto before = stepTimers::clock::now();
+    timers.stamp(stepTimers::meshUpdated);
+    const auto after = stepTimers::clock::now();
+
+    ASSERT_TRUE(timers.stamped(stepTimers::meshUpdated));
+    EXPECT_TRUE(timers.stampTime(stepTimers::meshUpdated) >= before);
+    EXPECT_TRUE(timers.stampTime(stepTimers::meshUpdated) <= after);
+
+    // A later stamp of the same name replaces it
+    sleepMs(5);
+    timers.stamp(stepTimers::meshUpdated);
+    EXPECT_GE
+    (
+        stepTimers::seconds(after, timers.stampTime(stepTimers::meshUpdated)),
+        0.005
+    );
+}
+
+
+// * * * * * * * * * * * * * * Function object  * * * * * * * * * * * * * * //
+
+TEST(stepTimersFunctionObject, rowsHeaderClosureSummary)
+{
+    const label nSteps = 6;
+    const label nStartup = 1;
+    const label lateStep = 4;   // first step of the part used late
+
+    std::unique_ptr<Time> runTimePtr
+    (
+        makeTime(nSteps, stepTimersFunctions(nStartup))
+    );
+    Time& runTime = *runTimePtr;
+
+    // As timedOversetFvMesh: parts registered before the first step
+    stepTimers& timers = stepTimers::New(runTime);
+    timers.add("oversetMovePoints", 0);
+
+    while (runTime.loop())
+    {
+        // Solver work before the mesh update
+        sleepMs(1);
+        timers.stamp(stepTimers::meshUpdateStart);
+
+        // The mesh update: the motion solver inside the point motion
+        {
+            stepTimers::scope t(timers, "oversetMovePoints");
+            sleepMs(3);
+            {
+                stepTimers::scope t(timers, "rbd");
+                sleepMs(2);
+            }
+        }
+        if (runTime.timeIndex() >= lateStep)
+        {
+            stepTimers::scope t(timers, "oversetLate");
+            sleepMs(1);
+        }
+        timers.stamp(stepTimers::meshUpdated);
+
+        // PIMPLE
+        sleepMs(5);
+    }
+
+    const fileName dir(outputDir(runTime));
+    ASSERT_TRUE(isFile(dir/"stepTimers.dat")) << dir;
+    const datFile dat(dir/"stepTimers.dat");
+
+    // Header at the first step, another when oversetLate appeared
+    ASSERT_EQ(dat.headers.size(), 2u);
+    const std::vector<std::string> first
+    {
+        "time", "rbd", "overset", "pimple", "total", "preUpdate",
+        "oversetMovePoints"
+    };
+    EXPECT_EQ(dat.headers[0], first);
+    std::vector<std::string> second(first);
+    second.push_back("oversetLate");
+    EXPECT_EQ(dat.headers[1], second);
+
+    ASSERT_EQ(dat.rows.size(), size_t(nSteps));
+    for (size_t i = 0; i < dat.rows.size(); ++i)
+    {
+        SCOPED_TRACE("row " + std::to_string(i));
+        const bool late = label(i) + 1 >= lateStep;
+
+        EXPECT_EQ(dat.headerOfRow[i], late ? 1u : 0u);
+        EXPECT_DOUBLE_EQ(dat(i, "time"), i + 1);
+
+        EXPECT_GE(dat(i, "rbd"), 0.002);
+        EXPECT_LT(dat(i, "rbd"), 0.002 + slack);
+        EXPECT_GE(dat(i, "oversetMovePoints"), 0.003);
+        EXPECT_LT(dat(i, "oversetMovePoints"), 0.003 + slack);
+        EXPECT_NEAR
+        (
+            dat(i, "overset"),
+            dat(i, "oversetMovePoints") + (late ? dat(i, "oversetLate") : 0),
+            1e-8
+        );
+        if (late)
+        {
+            EXPECT_GE(dat(i, "oversetLate"), 0.001);
+        }
+        EXPECT_GE(dat(i, "pimple"), 0.005);
+
+        EXPECT_GE(dat(i, "preUpdate"), 0.001);
+
+        const double sum = dat(i, "rbd") + dat(i, "overset") + dat(i, "pimple");
+        EXPECT_LE(sum, dat(i, "total"));
+        EXPECT_NEAR(sum, dat(i, "total"), 0.05*dat(i, "total") + 0.001);
+
+        // With preUpdate the step is covered but for the loop's own
+        // overhead
+        EXPECT_NEAR(sum + dat(i, "preUpdate"), dat(i, "total"), 2e-3);
+    }
+
+    // Summary: steps after the start-up, total's share 1
+    ASSERT_TRUE(isFile(dir/"stepTimersSummary.dat"));
+    bool foundSteps = false;
+    bool foundTotal = false;
+    for (const std::string& line : readLines(dir/"stepTimersSummary.dat"))
+    {
+        const std::vector<std::string> w = split(line);
+        if (w.size() >= 3 && w[0] == "#" && w[1] == "nSteps")
+        {
+            EXPECT_EQ(std::stoi(w[2]), nSteps - nStartup);
+            foundSteps = true;
+        }
+        if (w.size() == 4 && w[0] == "total")
+        {
+            EXPECT_DOUBLE_EQ(std::stod(w[3]), 1);
+            EXPECT_GE(std::stod(w[1]), 0.010);
+            foundTotal = true;
+        }
+        if (w.size() == 4 && w[0] == "oversetLate")
+        {
+            // Zero in the steps before its first use
+            const double meanLate = std::stod(w[1]);
+            EXPECT_GE(meanLate, 0.001*(nSteps - lateStep + 1)/(nSteps - 1));
+            EXPECT_LT(meanLate, 0.001 + slack);
+        }
+    }
+    EXPECT_TRUE(foundSteps);
+    EXPECT_TRUE(foundTotal);
+
+    // Reset after each step
+    EXPECT_EQ(timers["rbd"], 0);
+    EXPECT_FALSE(timers.stamped(stepTimers::meshUpdated));
+}
+
+
+TEST(stepTimersFunctionObject, pimpleIsTotalWithoutStamp)
+{
+    std::unique_ptr<Time> runTimePtr(makeTime(3, stepTimersFunctions(0)));
+    Time& runTime = *runTimePtr;
+
+    while (runTime.loop())
+    {
+        sleepMs(4);
+    }
+
+    const datFile dat(outputDir(runTime)/"stepTimers.dat");
+    ASSERT_EQ(dat.headers.size(), 1u);
+    const std::vector<std::string> measured
+    {
+        "time", "rbd", "overset", "pimple", "total", "preUpdate"
+    };
+    EXPECT_EQ(dat.headers[0], measured);
+    ASSERT_EQ(dat.rows.size(), 3u);
+    for (size_t i = 0; i < dat.rows.size(); ++i)
+    {
+        EXPECT_EQ(dat(i, "rbd"), 0);
+        EXPECT_EQ(dat(i, "overset"), 0);
+        EXPECT_EQ(dat(i, "preUpdate"), 0);
+        EXPECT_EQ(dat(i, "pimple"), dat(i, "total"));
+        EXPECT_GE(dat(i, "total"), 0.004);
+    }
+}
+
+
+TEST(stepTimersFunctionObject, badNStartup)
+{
+    std::unique_ptr<Time> runTimePtr(makeTime(2));
+
+    dictionary dict;
+    dict.add("nStartup", -1);
+
+    // (Within a run, functionObjectList stops with the message)
+    try
+    {
+        functionObjects::stepTimers fo("stepTimers", *runTimePtr, dict);
+        ADD_FAILURE() << "nStartup -1 accepted";
+    }
+    catch (const Foam::IOerror& err)
+    {
+        EXPECT_NE(err.message().find("nStartup"), std::string::npos)
+            << err.message();
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * * * main  * * * * * * * * * * * * * * * * //
+
+int main(int argc, char* argv[])
+{
+    ::testing::InitGoogleTest(&argc, argv);
+
+    // Bad input must throw (caught and checked by the tests), not exit
+    FatalError.throwExceptions();
+    FatalIOError.throwExceptions();
+
+    const int result = RUN_ALL_TESTS();
+
+    for (const fileName& dir : tmpCaseDirs)
+    {
+        rmDir(dir);
+    }
+
+    return result;
+}
+
+
+// ************************************************************************* //

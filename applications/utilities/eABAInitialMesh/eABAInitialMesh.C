@@ -1,0 +1,123 @@
+/*---------------------------------------------------------------------------*\
+  flapFoam: free-flight simulation of flapping-wing drones on OpenFOAM v1912
+-------------------------------------------------------------------------------
+Application
+    eABAInitialMesh
+
+Group
+    grpFlapFoamUtilities
+
+Description
+    Moves a mesh made in the reference configuration of a multibody model
+    (every joint at q = 0, as OpenFOAM's rigid-body motion assumes) to the
+    model's state at the start time: the prescribed joints at their exact
+    value at startTime (e.g. a wing at the end of its stroke) and the free
+    joints at the initial q of the dictionary.  Without it the first time
+    step would jump from q = 0 to the start state.
+
+    Writes the reference points to constant/polyMesh/points0 (kept if
+    present, so running twice gives the same mesh) and the moved points to
+    constant/polyMesh/points.  The motion solver (eABAMeshMotion) moves the
+    mesh from points0 from then on.
+
+Usage
+    \b eABAInitialMesh [-case DIR]
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "Time.H"
+#include "fvMesh.H"
+#include "pointIOField.H"
+#include "eABAMeshMotion.H"
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Move a mesh made at q = 0 to the multibody state at the start time"
+        " (writes constant/polyMesh/points0 and points)"
+    );
+    argList::noParallel();
+    argList::noFunctionObjects();
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+
+    fvMesh mesh
+    (
+        IOobject
+        (
+            fvMesh::defaultRegion,
+            runTime.timeName(),
+            runTime,
+            IOobject::MUST_READ
+        )
+    );
+
+    autoPtr<motionSolver> solverPtr(motionSolver::New(mesh));
+
+    const eABAMeshMotion* motionPtr = isA<eABAMeshMotion>(solverPtr());
+    if (!motionPtr)
+    {
+        FatalErrorInFunction
+            << "constant/dynamicMeshDict selects the motion solver "
+            << solverPtr->type() << "; eABAInitialMesh needs "
+            << eABAMeshMotion::typeName << exit(FatalError);
+    }
+    const eABAMeshMotion& motion = *motionPtr;
+
+    // Reference points: kept when already written
+    pointIOField points0
+    (
+        IOobject
+        (
+            "points0",
+            runTime.constant(),
+            polyMesh::meshSubDir,
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        motion.points0()
+    );
+
+    const pointField newPoints(motion.curPoints());
+
+    Info<< "Start state at t = " << runTime.value() << ": q = "
+        << motion.model().state().q() << nl
+        << "Largest point displacement from q = 0: "
+        << gMax(mag(newPoints - motion.points0())) << nl << endl;
+
+    Info<< "Writing " << points0.objectPath() << endl;
+    points0.write();
+
+    pointIOField points
+    (
+        IOobject
+        (
+            "points",
+            runTime.constant(),
+            polyMesh::meshSubDir,
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        newPoints
+    );
+    Info<< "Writing " << points.objectPath() << endl;
+    points.write();
+
+    Info<< nl << "End" << nl << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,150 @@
+/*---------------------------------------------------------------------------*\
+  flapFoam: free-flight simulation of flapping-wing drones on OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "timedOversetFvMesh.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(timedOversetFvMesh, 0);
+
+    addToRunTimeSelectionTable(dynamicFvMesh, timedOversetFvMesh, IOobject);
+}
+
+const Foam::word Foam::timedOversetFvMesh::movePointsPart
+(
+    "oversetMovePoints"
+);
+
+const Foam::word Foam::timedOversetFvMesh::addressingPart
+(
+    "oversetAddressing"
+);
+
+const Foam::word Foam::timedOversetFvMesh::interpolatePart
+(
+    "oversetInterpolate"
+);
+
+const Foam::word Foam::timedOversetFvMesh::waitPart
+(
+    "oversetWait"
+);
+
+const Foam::word Foam::timedOversetFvMesh::pimpleInterpolatePart
+(
+    "pimpleOversetInterpolate"
+);
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class Type>
+void Foam::timedOversetFvMesh::timedInterpolate(Field<Type>& psi) const
+{
+    if (updating_)
+    {
+        dynamicOversetFvMesh::interpolate(psi);
+    }
+    else
+    {
+        stepTimers::scope timer(timers_, pimpleInterpolatePart);
+        dynamicOversetFvMesh::interpolate(psi);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::timedOversetFvMesh::timedOversetFvMesh(const IOobject& io)
+:
+    dynamicOversetFvMesh(io),
+    timers_(stepTimers::New(io.time())),
+    updating_(false)
+{
+    // Register the parts in the order of a step, for the file header
+    timers_.add(movePointsPart, 0);
+    timers_.add(addressingPart, 0);
+    timers_.add(interpolatePart, 0);
+    if (Pstream::parRun())
+    {
+        timers_.add(waitPart, 0);
+    }
+    timers_.add(pimpleInterpolatePart, 0);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::timedOversetFvMesh::interpolate(scalarField& psi) const
+{
+    timedInterpolate(psi);
+}
+
+
+void Foam::timedOversetFvMesh::interpolate(vectorField& psi) const
+{
+    timedInterpolate(psi);
+}
+
+
+void Foam::timedOversetFvMesh::interpolate(sphericalTensorField& psi) const
+{
+    timedInterpolate(psi);
+}
+
+
+void Foam::timedOversetFvMesh::interpolate(symmTensorField& psi) const
+{
+    timedInterpolate(psi);
+}
+
+
+void Foam::timedOversetFvMesh::interpolate(tensorField& psi) const
+{
+    timedInterpolate(psi);
+}
+
+
+bool Foam::timedOversetFvMesh::update()
+{
+    timers_.stamp(stepTimers::meshUpdateStart);
+
+    updating_ = true;
+
+    bool changed = false;
+    {
+        stepTimers::scope timer(timers_, movePointsPart);
+        changed = dynamicMotionSolverListFvMesh::update();
+    }
+
+    if (changed)
+    {
+        {
+            stepTimers::scope timer(timers_, addressingPart);
+            updateAddressing();
+        }
+        {
+            stepTimers::scope timer(timers_, interpolatePart);
+            interpolateFields();
+        }
+    }
+
+    if (Pstream::parRun())
+    {
+        stepTimers::scope timer(timers_, waitPart);
+        returnReduce(true, andOp<bool>());
+    }
+
+    updating_ = false;
+
+    timers_.stamp(stepTimers::meshUpdated);
+
+    return changed;
+}
+
+
+// ************************************************************************* //
