@@ -1,0 +1,104 @@
+"""
+Single-wing drone (SW) geometry: the semi-elliptical thin-plate wing of
+Poletti et al. (REFERENCE.md section 3, Table 1) and its analytic surface area.
+
+Frame (phi = alpha = 0): flapping axis z through the origin, stroke plane x-y,
+the wing spans +y from y = R0 (root) to y = R0 + R (tip), chord along x,
+thickness along z.  The planform is symmetric about the pitch axis (the y
+axis: x = 0, z = 0), so the leading and trailing edges are at
+x = -c(r)/2 and x = +c(r)/2, with r = y - R0 and
+
+    c(r) = c_r sqrt(1 - (r/R)^2),   c_r = 4 cbar/pi.
+
+The planform is the half ellipse with semi-axes a = c_r/2 (x) and R (y),
+centred on (0, R0); its edge is E(tau) = (a cos tau, R0 + R sin tau),
+tau in [0, pi] (tau = pi: root leading edge, pi/2: tip, 0: root trailing
+edge).  No truncation: the mesh follows the ellipse up to the tip.
+
+The wing is a plate of thickness t: |z| <= t/2.  Its wetted surface
+("wing" patch) = top + bottom (2 S) + the edge band of height t along the
+curved edge (half the perimeter of the ellipse) and the straight root edge
+(length c_r):
+
+    A = 2 S + t (P/2 + c_r),   S = pi/4 c_r R = R cbar,
+    P/2 = 2 R E(m),  m = 1 - (a/R)^2   (E: complete elliptic integral of
+                                         the second kind, parameter m)
+"""
+
+import math
+
+import numpy as np
+
+# Table 1 (SI units)
+R = 0.05            # span [m]
+R0 = 0.0225         # root offset from the flapping axis [m]
+CBAR = 0.015        # mean chord [m]
+THICKNESS = 0.00045 # plate thickness [m]
+CROOT = 4.0*CBAR/math.pi   # root chord [m]
+A = 0.5*CROOT       # semi-axis along x [m]
+
+
+def chord(r):
+    """Local chord c(r), r = distance from the root along the span."""
+    r = np.asarray(r, dtype=float)
+    return CROOT*np.sqrt(np.clip(1.0 - (r/R)**2, 0.0, None))
+
+
+def planformArea():
+    """S = pi/4 c_r R (= R cbar)."""
+    return 0.25*math.pi*CROOT*R
+
+
+def ellipeM(m):
+    """Complete elliptic integral of the second kind E(m) (parameter m),
+    by the arithmetic-geometric mean (no scipy needed)."""
+    a0, g0 = 1.0, math.sqrt(1.0 - m)
+    s = 0.5*m
+    p = 0.5
+    while abs(a0 - g0) > 1e-16:
+        a1 = 0.5*(a0 + g0)
+        g1 = math.sqrt(a0*g0)
+        c1 = 0.5*(a0 - g0)
+        p *= 2.0
+        s += p*c1*c1
+        a0, g0 = a1, g1
+    return (1.0 - s)*0.5*math.pi/a0
+
+
+def halfPerimeter():
+    """Length of the curved (leading edge - tip - trailing edge) edge."""
+    m = 1.0 - (A/R)**2
+    return 2.0*R*ellipeM(m)
+
+
+def wingArea():
+    """Analytic wetted area of the plate: 2 S + t (P/2 + c_r)."""
+    return 2.0*planformArea() + THICKNESS*(halfPerimeter() + CROOT)
+
+
+def edgePoint(tau):
+    """Point E(tau) on the planform edge (x, y)."""
+    tau = np.asarray(tau, dtype=float)
+    return np.stack([A*np.cos(tau), R0 + R*np.sin(tau)], axis=-1)
+
+
+def edgeNormal(tau):
+    """Outward unit normal of the planform edge at E(tau)."""
+    tau = np.asarray(tau, dtype=float)
+    n = np.stack([np.cos(tau)/A, np.sin(tau)/R], axis=-1)
+    return n/np.linalg.norm(n, axis=-1, keepdims=True)
+
+
+def summary():
+    return {
+        "R": R, "R0": R0, "cbar": CBAR, "thickness": THICKNESS,
+        "rootChord": CROOT,
+        "planformArea": planformArea(),
+        "halfPerimeter": halfPerimeter(),
+        "wingAreaAnalytic": wingArea(),
+    }
+
+
+if __name__ == "__main__":
+    for k, v in summary().items():
+        print("%-18s %.10g" % (k, v))
