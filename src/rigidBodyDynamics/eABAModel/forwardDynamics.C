@@ -14,30 +14,17 @@ Description
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::RBD::eABAModel::forwardDynamics
+void Foam::RBD::eABAModel::forwardPass1
 (
-    rigidBodyModelState& state,
-    const scalarField& tau,
+    const rigidBodyModelState& state,
     const Field<spatialVector>& fx
 ) const
 {
     const scalarField& q = state.q();
     const scalarField& qDot = state.qDot();
-    scalarField& qDdot = state.qDdot();
-
-    // A tree grown after setPrescribed has no prescribed joint map
-    const bool mapped = (prescribedI_.size() == nBodies());
-    if (!mapped && prescribedQ_.size())
-    {
-        FatalErrorInFunction
-            << "the tree changed after setPrescribed: call it again"
-            << exit(FatalError);
-    }
 
     joint::XSvc J;
 
-    // Forward pass 1: link velocities, velocity-product accelerations and
-    // the isolated-link inertia and bias force
     v_[0] = Zero;
 
     for (label i = 1; i < nBodies(); ++i)
@@ -62,8 +49,16 @@ void Foam::RBD::eABAModel::forwardDynamics
             pA_[i] -= *X0_[i] & fx[i];
         }
     }
+}
 
-    // Backward pass: articulated inertias and bias forces
+
+void Foam::RBD::eABAModel::backwardPass
+(
+    const scalarField& qDdot,
+    const scalarField& tau,
+    const bool mapped
+) const
+{
     for (label i = nBodies() - 1; i > 0; --i)
     {
         const joint& jnt = joints()[i];
@@ -113,9 +108,16 @@ void Foam::RBD::eABAModel::forwardDynamics
             pA_[p] += Xlambda_[i].T() & pa;
         }
     }
+}
 
-    // Forward pass 2: accelerations of the free joints, link accelerations
-    // and the force each prescribed joint needs
+
+void Foam::RBD::eABAModel::forwardPass2
+(
+    scalarField& qDdot,
+    const scalarField& tau,
+    const bool mapped
+) const
+{
     a_[0] = spatialVector(Zero, -g_);
 
     for (label i = 1; i < nBodies(); ++i)
@@ -151,6 +153,28 @@ void Foam::RBD::eABAModel::forwardDynamics
             a_[i] += (S_[i] & qDdoti);
         }
     }
+}
+
+
+void Foam::RBD::eABAModel::forwardDynamics
+(
+    rigidBodyModelState& state,
+    const scalarField& tau,
+    const Field<spatialVector>& fx
+) const
+{
+    // A tree grown after setPrescribed has no prescribed joint map
+    const bool mapped = (prescribedI_.size() == nBodies());
+    if (!mapped && prescribedQ_.size())
+    {
+        FatalErrorInFunction
+            << "the tree changed after setPrescribed: call it again"
+            << exit(FatalError);
+    }
+
+    forwardPass1(state, fx);
+    backwardPass(state.qDdot(), tau, mapped);
+    forwardPass2(state.qDdot(), tau, mapped);
 }
 
 

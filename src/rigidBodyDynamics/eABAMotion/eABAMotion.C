@@ -317,6 +317,7 @@ void Foam::RBD::eABAMotion::write(Ostream& os) const
     os.writeEntry("accelerationRelaxation", aRelax_);
     os.writeEntry("accelerationDamping", aDamp_);
     os.writeEntry("report", report_);
+    os.writeEntry("g", g());
 
     imposedMotions_.write(os);
 }
