@@ -14,9 +14,10 @@ Description
     checked quickly.
 
     Reads
-      - constant/dynamicMeshDict: the multibody dictionary at the top level
-        (solver, nIter, accelerationRelaxation, accelerationDamping, g,
-        bodies, restraints, imposedMotion: see eABAMotion);
+      - constant/dynamicMeshDict: the multibody dictionary (solver, nIter,
+        accelerationRelaxation, accelerationDamping, g, bodies, restraints,
+        imposedMotion: see eABAMotion) at the top level or, for a case of
+        the overset motion solver, in its eABAMeshMotionCoeffs;
       - system/controlDict: startTime, endTime, deltaT, writeControl and
         writeInterval;
       - <startTime>/uniform/rigidBodyMotionState when present: the initial
@@ -88,7 +89,7 @@ int main(int argc, char *argv[])
     #include "setRootCase.H"
     #include "createTime.H"
 
-    const IOdictionary modelDict
+    const IOdictionary dynamicMeshDict
     (
         IOobject
         (
@@ -100,6 +101,9 @@ int main(int argc, char *argv[])
             false
         )
     );
+
+    const dictionary& modelDict =
+        dynamicMeshDict.optionalSubDict("eABAMeshMotionCoeffs");
 
     // Initial state: <startTime>/uniform/rigidBodyMotionState if present
     IOobject stateIO
