@@ -30,7 +30,7 @@ Description
 
 #include "eABAModel.H"
 #include "rigidBodyModelState.H"
-#include "Time.H"
+#include "scratchTime.H"
 #include "IStringStream.H"
 
 #include <algorithm>
@@ -47,42 +47,7 @@ using namespace Foam;
 namespace
 {
 
-std::string tmpCaseDir;
-std::unique_ptr<Time> runTimePtr;
-
-
-void makeTime()
-{
-    char tmpl[] = "/tmp/flapFoamBench-forwardDynamics-XXXXXX";
-    const char* dir = mkdtemp(tmpl);
-    if (!dir)
-    {
-        std::abort();
-    }
-    tmpCaseDir = dir;
-
-    dictionary controlDict;
-    controlDict.add("startTime", 0);
-    controlDict.add("endTime", 1);
-    controlDict.add("deltaT", 1e-5);
-    controlDict.add("writeControl", "timeStep");
-    controlDict.add("writeInterval", 1000);
-
-    const fileName caseDir(tmpCaseDir);
-    runTimePtr.reset
-    (
-        new Time
-        (
-            controlDict,
-            caseDir.path(),
-            caseDir.name(),
-            "system",
-            "constant",
-            false,
-            false
-        )
-    );
-}
+std::unique_ptr<scratchTime> runTimePtr;
 
 
 const char* singleWingDict = R"(
@@ -167,7 +132,7 @@ struct droneTree
 
     droneTree(const char* dictString, const labelList& prescribed)
     :
-        model(*runTimePtr, dictionary(IStringStream(dictString)())),
+        model((*runTimePtr)(), dictionary(IStringStream(dictString)())),
         state(model),
         tau(model.nDoF(), Zero),
         fx(model.nBodies(), Zero)
@@ -257,7 +222,10 @@ void stock(benchmark::State& st, droneTree* tree)
 
 int main(int argc, char** argv)
 {
-    makeTime();
+    runTimePtr.reset
+    (
+        new scratchTime("flapFoamBench-forwardDynamics", 1, 1e-5)
+    );
 
     // SW: q = (Pz Px Rz Ry), the wing's Rz, Ry prescribed
     singleWing.reset(new droneTree(singleWingDict, labelList({2, 3})));
@@ -292,7 +260,6 @@ int main(int argc, char** argv)
     singleWing.reset();
     bodyWing.reset();
     runTimePtr.reset();
-    rmdir(tmpCaseDir.c_str());
 
     return 0;
 }

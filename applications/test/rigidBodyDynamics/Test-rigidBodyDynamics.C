@@ -42,7 +42,7 @@ Description
 #include "rigidBodyModelState.H"
 #include "rigidBody.H"
 #include "joints.H"
-#include "Time.H"
+#include "scratchTime.H"
 #include "IStringStream.H"
 #include "OStringStream.H"
 
@@ -72,46 +72,10 @@ typedef Eigen::VectorXd VecX;
 
 // Time database for the models: from an in-memory controlDict in a
 // temporary case directory (nothing is read or written there)
-std::string tmpCaseDir;
-
 const Time& runTime()
 {
-    static std::unique_ptr<Time> timePtr;
-
-    if (!timePtr)
-    {
-        char tmpl[] = "/tmp/flapFoamTest-rigidBodyDynamics-XXXXXX";
-        const char* dir = mkdtemp(tmpl);
-        if (!dir)
-        {
-            std::abort();
-        }
-        tmpCaseDir = dir;
-
-        dictionary controlDict;
-        controlDict.add("startTime", 0);
-        controlDict.add("endTime", 1);
-        controlDict.add("deltaT", 1e-3);
-        controlDict.add("writeControl", "timeStep");
-        controlDict.add("writeInterval", 1000);
-
-        const fileName caseDir(tmpCaseDir);
-        timePtr.reset
-        (
-            new Time
-            (
-                controlDict,
-                caseDir.path(),
-                caseDir.name(),
-                "system",
-                "constant",
-                false,      // no function objects
-                false       // no libs
-            )
-        );
-    }
-
-    return *timePtr;
+    static scratchTime time("flapFoamTest-rigidBodyDynamics", 1, 1e-3);
+    return time();
 }
 
 
@@ -1802,14 +1766,7 @@ int main(int argc, char** argv)
     testing::InitGoogleTest(&argc, argv);
 
     runTime();
-    const int rc = RUN_ALL_TESTS();
-
-    if (!tmpCaseDir.empty())
-    {
-        rmdir(tmpCaseDir.c_str());
-    }
-
-    return rc;
+    return RUN_ALL_TESTS();
 }
 
 

@@ -23,7 +23,7 @@ Description
 
 #include "stepTimers.H"
 #include "stepTimersFunctionObject.H"
-#include "Time.H"
+#include "scratchTime.H"
 #include "OSspecific.H"
 
 #include <gtest/gtest.h>
@@ -47,58 +47,9 @@ namespace
 //- Slack on a sleep: the thread may wake late on a busy machine
 const scalar slack = 0.03;
 
-//- The temporary case directories, removed at the end
-std::vector<fileName> tmpCaseDirs;
-
-
 void sleepMs(const int ms)
 {
     std::this_thread::sleep_for(std::chrono::milliseconds(ms));
-}
-
-
-//- A Time database in a new temporary case directory, from an in-memory
-//- controlDict (with function objects if functions is not empty)
-std::unique_ptr<Time> makeTime
-(
-    const label nSteps,
-    const dictionary& functions = dictionary()
-)
-{
-    char tmpl[] = "/tmp/flapFoamTest-stepTimers-XXXXXX";
-    const char* dir = mkdtemp(tmpl);
-    if (!dir)
-    {
-        std::abort();
-    }
-
-    dictionary controlDict;
-    controlDict.add("startTime", 0);
-    controlDict.add("endTime", nSteps);
-    controlDict.add("deltaT", 1);
-    controlDict.add("writeControl", "timeStep");
-    controlDict.add("writeInterval", 1000);
-    if (functions.size())
-    {
-        controlDict.add("functions", functions);
-    }
-
-    const fileName caseDir(dir);
-    tmpCaseDirs.push_back(caseDir);
-
-    return std::unique_ptr<Time>
-    (
-        new Time
-        (
-            controlDict,
-            caseDir.path(),
-            caseDir.name(),
-            "system",
-            "constant",
-            functions.size() > 0,   // function objects
-            false                   // no libs: linked in
-        )
-    );
 }
 
 
@@ -206,8 +157,8 @@ fileName outputDir(const Time& runTime)
 
 TEST(stepTimersRegistry, scopeAddsElapsedTime)
 {
-    std::unique_ptr<Time> runTime(makeTime(1));
-    stepTimers& timers = stepTimers::New(*runTime);
+    scratchTime runTime("flapFoamTest-stepTimers", 1, 1);
+    stepTimers& timers = stepTimers::New(runTime());
 
     {
         stepTimers::scope timer(timers, "rbd");
@@ -232,8 +183,8 @@ TEST(stepTimersRegistry, scopeAddsElapsedTime)
 
 TEST(stepTimersRegistry, partsInOrderOfFirstUse)
 {
-    std::unique_ptr<Time> runTime(makeTime(1));
-    stepTimers& timers = stepTimers::New(*runTime);
+    scratchTime runTime("flapFoamTest-stepTimers", 1, 1);
+    stepTimers& timers = stepTimers::New(runTime());
 
     timers.add("pimple", 1);
     timers.add("overset", 2);
@@ -257,8 +208,8 @@ TEST(stepTimersRegistry, partsInOrderOfFirstUse)
 
 TEST(stepTimersRegistry, resetZeroesPartsAndClearsStamps)
 {
-    std::unique_ptr<Time> runTime(makeTime(1));
-    stepTimers& timers = stepTimers::New(*runTime);
+    scratchTime runTime("flapFoamTest-stepTimers", 1, 1);
+    stepTimers& timers = stepTimers::New(runTime());
 
     timers.add("a", 1.5);
     timers.add("b", 2.5);
@@ -281,16 +232,16 @@ TEST(stepTimersRegistry, resetZeroesPartsAndClearsStamps)
 
 TEST(stepTimersRegistry, newReturnsTheSameObject)
 {
-    std::unique_ptr<Time> runTime(makeTime(1));
+    scratchTime runTime("flapFoamTest-stepTimers", 1, 1);
 
-    stepTimers& a = stepTimers::New(*runTime);
-    stepTimers& b = stepTimers::New(*runTime);
+    stepTimers& a = stepTimers::New(runTime());
+    stepTimers& b = stepTimers::New(runTime());
     EXPECT_EQ(&a, &b);
 
     // A registry on the Time database (as a mesh is) gives the Time's
     objectRegistry sub
     (
-        IOobject("sub", runTime->timeName(), *runTime)
+        IOobject("sub", runTime().timeName(), runTime())
     );
     EXPECT_EQ(&stepTimers::New(sub), &a);
 
@@ -298,16 +249,16 @@ TEST(stepTimersRegistry, newReturnsTheSameObject)
     EXPECT_EQ(stepTimers::New(sub)["rbd"], 1);
 
     // Another Time database has its own
-    std::unique_ptr<Time> other(makeTime(1));
-    EXPECT_NE(&stepTimers::New(*other), &a);
-    EXPECT_EQ(stepTimers::New(*other)["rbd"], 0);
+    scratchTime other("flapFoamTest-stepTimers", 1, 1);
+    EXPECT_NE(&stepTimers::New(other()), &a);
+    EXPECT_EQ(stepTimers::New(other())["rbd"], 0);
 }
 
 
 TEST(stepTimersRegistry, nestedScopesAreExclusive)
 {
-    std::unique_ptr<Time> runTime(makeTime(1));
-    stepTimers& timers = stepTimers::New(*runTime);
+    scratchTime runTime("flapFoamTest-stepTimers", 1, 1);
+    stepTimers& timers = stepTimers::New(runTime());
 
     const auto start = stepTimers::clock::now();
     {
@@ -350,8 +301,8 @@ TEST(stepTimersRegistry, nestedScopesAreExclusive)
 
 TEST(stepTimersRegistry, stamps)
 {
-    std::unique_ptr<Time> runTime(makeTime(1));
-    stepTimers& timers = stepTimers::New(*runTime);
+    scratchTime runTime("flapFoamTest-stepTimers", 1, 1);
+    stepTimers& timers = stepTimers::New(runTime());
 
     EXPECT_FALSE(timers.stamped(stepTimers::meshUpdated));
     EXPECT_THROW(timers.stampTime(stepTimers::meshUpdated), Foam::error);
@@ -383,11 +334,14 @@ TEST(stepTimersFunctionObject, rowsHeaderClosureSummary)
     const label nStartup = 1;
     const label lateStep = 4;   // first step of the part used late
 
-    std::unique_ptr<Time> runTimePtr
+    scratchTime runTimePtr
     (
-        makeTime(nSteps, stepTimersFunctions(nStartup))
+        "flapFoamTest-stepTimers",
+        nSteps,
+        1,
+        stepTimersFunctions(nStartup)
     );
-    Time& runTime = *runTimePtr;
+    Time& runTime = runTimePtr();
 
     // As timedOversetFvMesh: parts registered before the first step
     stepTimers& timers = stepTimers::New(runTime);
@@ -508,8 +462,14 @@ TEST(stepTimersFunctionObject, rowsHeaderClosureSummary)
 
 TEST(stepTimersFunctionObject, pimpleIsTotalWithoutStamp)
 {
-    std::unique_ptr<Time> runTimePtr(makeTime(3, stepTimersFunctions(0)));
-    Time& runTime = *runTimePtr;
+    scratchTime runTimePtr
+    (
+        "flapFoamTest-stepTimers",
+        3,
+        1,
+        stepTimersFunctions(0)
+    );
+    Time& runTime = runTimePtr();
 
     while (runTime.loop())
     {
@@ -537,7 +497,7 @@ TEST(stepTimersFunctionObject, pimpleIsTotalWithoutStamp)
 
 TEST(stepTimersFunctionObject, badNStartup)
 {
-    std::unique_ptr<Time> runTimePtr(makeTime(2));
+    scratchTime runTimePtr("flapFoamTest-stepTimers", 2, 1);
 
     dictionary dict;
     dict.add("nStartup", -1);
@@ -545,7 +505,7 @@ TEST(stepTimersFunctionObject, badNStartup)
     // (Within a run, functionObjectList stops with the message)
     try
     {
-        functionObjects::stepTimers fo("stepTimers", *runTimePtr, dict);
+        functionObjects::stepTimers fo("stepTimers", runTimePtr(), dict);
         ADD_FAILURE() << "nStartup -1 accepted";
     }
     catch (const Foam::IOerror& err)
@@ -567,11 +527,6 @@ int main(int argc, char* argv[])
     FatalIOError.throwExceptions();
 
     const int result = RUN_ALL_TESTS();
-
-    for (const fileName& dir : tmpCaseDirs)
-    {
-        rmDir(dir);
-    }
 
     return result;
 }
