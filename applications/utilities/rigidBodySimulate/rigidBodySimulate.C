@@ -46,35 +46,6 @@ Usage
 
 using namespace Foam;
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-//- Write the state to <time>/uniform/rigidBodyMotionState
-void writeState(const Time& runTime, const RBD::eABAMotion& model)
-{
-    IOdictionary stateDict
-    (
-        IOobject
-        (
-            "rigidBodyMotionState",
-            runTime.timeName(),
-            "uniform",
-            runTime,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        )
-    );
-    model.state().write(stateDict);
-    stateDict.regIOobject::writeObject
-    (
-        IOstream::ASCII,
-        IOstream::currentVersion,
-        IOstream::UNCOMPRESSED,
-        true
-    );
-}
-
-
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 int main(int argc, char *argv[])
@@ -106,21 +77,11 @@ int main(int argc, char *argv[])
         dynamicMeshDict.optionalSubDict("eABAMeshMotionCoeffs");
 
     // Initial state: <startTime>/uniform/rigidBodyMotionState if present
-    IOobject stateIO
-    (
-        "rigidBodyMotionState",
-        runTime.timeName(),
-        "uniform",
-        runTime,
-        IOobject::READ_IF_PRESENT,
-        IOobject::NO_WRITE,
-        false
-    );
-
+    IOobject stateIO(RBD::eABAMotion::stateIO(runTime));
     const bool restart = stateIO.typeHeaderOk<IOdictionary>(false);
     const dictionary stateDict
     (
-        restart ? dictionary(IOdictionary(stateIO)) : dictionary()
+        RBD::eABAMotion::initialState(runTime, dictionary())
     );
 
     if (restart)
@@ -198,7 +159,7 @@ int main(int argc, char *argv[])
         }
     }
 
-    writeState(runTime, model);
+    model.writeState(runTime);
 
     Info<< nl << "Wrote " << os.name() << nl
         << "Wrote " << runTime.timeName()/"uniform"/"rigidBodyMotionState"

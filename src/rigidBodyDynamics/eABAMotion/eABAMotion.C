@@ -5,6 +5,7 @@
 #include "eABAMotion.H"
 #include "eABASolver.H"
 #include "Time.H"
+#include "IOdictionary.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -221,6 +222,65 @@ void Foam::RBD::eABAMotion::solve
             status(bodyID);
         }
     }
+}
+
+
+Foam::IOobject Foam::RBD::eABAMotion::stateIO
+(
+    const objectRegistry& db,
+    const IOobject::readOption r
+)
+{
+    return IOobject
+    (
+        "rigidBodyMotionState",
+        db.time().timeName(),
+        "uniform",
+        db,
+        r,
+        IOobject::NO_WRITE,
+        false
+    );
+}
+
+
+Foam::dictionary Foam::RBD::eABAMotion::initialState
+(
+    const objectRegistry& db,
+    const dictionary& dict
+)
+{
+    IOobject io(stateIO(db));
+
+    if (io.typeHeaderOk<IOdictionary>(true))
+    {
+        return IOdictionary(io);
+    }
+
+    return dict;
+}
+
+
+bool Foam::RBD::eABAMotion::writeState(const objectRegistry& db) const
+{
+    // Full precision from the start: the entries are formatted as they are
+    // added to the dictionary
+    const label oldPrecision = IOstream::precision_;
+    IOstream::precision_ = 17;
+
+    IOdictionary dict(stateIO(db, IOobject::NO_READ));
+    motionState_.write(dict);
+
+    const bool ok = dict.regIOobject::writeObject
+    (
+        IOstream::ASCII,
+        IOstream::currentVersion,
+        IOstream::UNCOMPRESSED,
+        true
+    );
+    IOstream::precision_ = oldPrecision;
+
+    return ok;
 }
 
 

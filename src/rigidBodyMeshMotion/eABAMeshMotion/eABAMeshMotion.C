@@ -27,43 +27,6 @@ namespace Foam
 }
 
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-
-//- The stored multibody state of the current time if present (restart),
-//- otherwise the coefficients (initial q, qDot there, zero by default)
-Foam::dictionary initialState
-(
-    const Foam::polyMesh& mesh,
-    const Foam::dictionary& coeffs
-)
-{
-    using namespace Foam;
-
-    IOobject io
-    (
-        "rigidBodyMotionState",
-        mesh.time().timeName(),
-        "uniform",
-        mesh,
-        IOobject::READ_IF_PRESENT,
-        IOobject::NO_WRITE,
-        false
-    );
-
-    if (io.typeHeaderOk<IOdictionary>(true))
-    {
-        return IOdictionary(io);
-    }
-
-    return coeffs;
-}
-
-} // End anonymous namespace
-
-
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::labelList Foam::eABAMeshMotion::zonePoints
@@ -394,7 +357,12 @@ Foam::eABAMeshMotion::eABAMeshMotion
 )
 :
     points0MotionSolver(mesh, dict, typeName),
-    model_(mesh.time(), coeffDict(), initialState(mesh, coeffDict())),
+    model_
+    (
+        mesh.time(),
+        coeffDict(),
+        RBD::eABAMotion::initialState(mesh, coeffDict())
+    ),
     backgroundBodyID_(-1),
     backgroundMask_(Zero),
     fluidLoad_(coeffDict().getOrDefault<Switch>("fluidLoad", true)),
@@ -419,14 +387,8 @@ Foam::eABAMeshMotion::eABAMeshMotion
     // A fresh start: the exact prescribed state at the start time and
     // consistent accelerations (gravity and restraints: the flow is at
     // rest).  A restart keeps the stored state.
-    const bool restart = IOobject
-    (
-        "rigidBodyMotionState",
-        mesh.time().timeName(),
-        "uniform",
-        mesh,
-        IOobject::READ_IF_PRESENT
-    ).typeHeaderOk<IOdictionary>(true);
+    const bool restart =
+        RBD::eABAMotion::stateIO(mesh).typeHeaderOk<IOdictionary>(true);
 
     if (!restart)
     {
@@ -499,36 +461,14 @@ void Foam::eABAMeshMotion::solve()
 
 bool Foam::eABAMeshMotion::writeObject
 (
-    IOstream::streamFormat fmt,
-    IOstream::versionNumber ver,
-    IOstream::compressionType cmp,
-    const bool valid
+    IOstream::streamFormat,
+    IOstream::versionNumber,
+    IOstream::compressionType,
+    const bool
 ) const
 {
-    IOdictionary dict
-    (
-        IOobject
-        (
-            "rigidBodyMotionState",
-            mesh().time().timeName(),
-            "uniform",
-            mesh(),
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        )
-    );
-
-    model_.state().write(dict);
-
-    // The state is small: always ascii, full precision for exact restarts
-    const label oldPrecision = IOstream::precision_;
-    IOstream::precision_ = 17;
-    const bool ok =
-        dict.regIOobject::writeObject(IOstream::ASCII, ver, cmp, valid);
-    IOstream::precision_ = oldPrecision;
-
-    return ok;
+    // The state is small: always ascii, full precision
+    return model_.writeState(mesh());
 }
 
 
