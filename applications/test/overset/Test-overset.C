@@ -1,0 +1,358 @@
+/*---------------------------------------------------------------------------*\
+  flapFoam: free-flight simulation of flapping-wing drones on OpenFOAM v1912
+-------------------------------------------------------------------------------
+Description
+    Tests of the cached donor search of the octreeInverseDistance stencil
+    (Foam::zoneDonorSearch) against brute force on small meshes:
+
+      - the rigid fit (Kabsch) recovers a known rotation and translation;
+        a deformed pose gives a residual of the size of the deformation;
+      - on a block of hexahedra with jittered (warped, non-planar) interior
+        points, moved rigidly: for random points (some outside) the walk
+        from a random / previous / invalid seed, the octree and a brute-force
+        loop over the cells of the MOVED mesh give the same cell;
+      - degenerate queries: mesh vertices and face centres (ties: any cell
+        that contains the point), far outside, maxWalk 0;
+      - an empty zone (no cells): no donor, identity fit.
+
+    Every test asserts; the program exits non-zero on failure.
+
+\*---------------------------------------------------------------------------*/
+
+#include "zoneDonorSearch.H"
+#include "polyMesh.H"
+#include "cellModel.H"
+#include "cellShapeList.H"
+#include "quaternion.H"
+#include "Random.H"
+#include "scratchTime.H"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * * Helpers * * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Block of n^3 hexahedra on [0, 1]^3, interior points jittered by up to
+//- jitter cell sizes, then moved by x -> R x + t
+std::unique_ptr<polyMesh> hexBlock
+(
+    const Time& runTime,
+    const word& name,
+    const label n,
+    const scalar jitter,
+    const tensor& R = tensor::I,
+    const vector& t = Zero
+)
+{
+    const scalar h = 1.0/n;
+    Random rnd(1234);
+
+    pointField pts((n + 1)*(n + 1)*(n + 1));
+    auto pid = [n](label i, label j, label k)
+    {
+        return i + (n + 1)*(j + (n + 1)*k);
+    };
+
+    for (label k = 0; k <= n; ++k)
+    {
+        for (label j = 0; j <= n; ++j)
+        {
+            for (label i = 0; i <= n; ++i)
+            {
+                point p(i*h, j*h, k*h);
+                const bool interior =
+                    i > 0 && i < n && j > 0 && j < n && k > 0 && k < n;
+                if (interior)
+                {
+                    p += jitter*h*(2*rnd.sample01<vector>() - vector::one);
+                }
+                pts[pid(i, j, k)] = (R & p) + t;
+            }
+        }
+    }
+
+    const cellModel& hex = cellModel::ref(cellModel::HEX);
+    cellShapeList shapes(n*n*n);
+    label celli = 0;
+    for (label k = 0; k < n; ++k)
+    {
+        for (label j = 0; j < n; ++j)
+        {
+            for (label i = 0; i < n; ++i)
+            {
+                labelList v
+                ({
+                    pid(i, j, k), pid(i+1, j, k),
+                    pid(i+1, j+1, k), pid(i, j+1, k),
+                    pid(i, j, k+1), pid(i+1, j, k+1),
+                    pid(i+1, j+1, k+1), pid(i, j+1, k+1)
+                });
+                shapes[celli++] = cellShape(hex, v);
+            }
+        }
+    }
+
+    return std::unique_ptr<polyMesh>
+    (
+        new polyMesh
+        (
+            IOobject
+            (
+                name,
+                runTime.constant(),
+                runTime,
+                IOobject::NO_READ,
+                IOobject::NO_WRITE,
+                false
+            ),
+            std::move(pts),
+            shapes,
+            faceListList(),
+            wordList(),
+            PtrList<dictionary>(),
+            "walls",
+            "wall"
+        )
+    );
+}
+
+
+//- A rotation that is not close to anything special
+tensor someRotation()
+{
+    return quaternion(normalised(vector(0.3, -0.8, 0.5)), 1.1).R();
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * Tests * * * * * * * * * * * * * * * * //
+
+TEST(zoneDonorSearch, rigidFitRecoversTransform)
+{
+    scratchTime time("flapFoamTest-overset", 1, 1);
+    const auto mesh0 = hexBlock(time(), "ref", 4, 0.2);
+    zoneDonorSearch search(*mesh0, 16);
+
+    const tensor R = someRotation();
+    const vector t(0.4, -1.2, 3.0);
+
+    pointField moved(mesh0->points().size());
+    forAll(moved, i)
+    {
+        moved[i] = (R & mesh0->points()[i]) + t;
+    }
+
+    const scalar residual = search.fitTransform(moved);
+    EXPECT_LT(residual, 1e-12);
+    EXPECT_LT(mag(search.R() - R), 1e-12);
+    EXPECT_LT(mag(search.t() - t), 1e-12);
+
+    forAll(moved, i)
+    {
+        EXPECT_LT(mag(search.toReference(moved[i]) - mesh0->points()[i]), 1e-12);
+    }
+
+    // Through a point map (reversed order of a larger list)
+    pointField all(2*moved.size(), vector(9, 9, 9));
+    labelList pointMap(moved.size());
+    forAll(moved, i)
+    {
+        pointMap[i] = all.size() - 1 - i;
+        all[pointMap[i]] = moved[i];
+    }
+    EXPECT_LT(search.fitTransform(all, pointMap), 1e-12);
+    EXPECT_LT(mag(search.R() - R), 1e-12);
+
+    // Unmoved: identity exactly
+    EXPECT_EQ(search.fitTransform(mesh0->points()), 0);
+    EXPECT_TRUE(search.R() == tensor::I);
+    EXPECT_TRUE(search.t() == vector::zero);
+}
+
+
+TEST(zoneDonorSearch, rigidFitDetectsDeformation)
+{
+    scratchTime time("flapFoamTest-overset", 1, 1);
+    const auto mesh0 = hexBlock(time(), "ref", 4, 0.2);
+    zoneDonorSearch search(*mesh0, 16);
+
+    const tensor R = someRotation();
+    pointField moved(mesh0->points().size());
+    forAll(moved, i)
+    {
+        moved[i] = R & mesh0->points()[i];
+    }
+    moved[7] += vector(0, 0, 1e-3);
+
+    const scalar residual = search.fitTransform(moved);
+    EXPECT_GT(residual, 1e-4);
+    EXPECT_LT(residual, 1e-3);
+
+    // Wrong number of points: FatalError
+    EXPECT_ANY_THROW(search.fitTransform(pointField(3, Zero)));
+}
+
+
+TEST(zoneDonorSearch, donorsEqualBruteForceInMovedMesh)
+{
+    scratchTime time("flapFoamTest-overset", 1, 1);
+    const label n = 6;
+    const tensor R = someRotation();
+    const vector t(-0.3, 0.7, 0.2);
+
+    const auto mesh0 = hexBlock(time(), "ref", n, 0.3);
+    const auto mesh = hexBlock(time(), "moved", n, 0.3, R, t);
+
+    zoneDonorSearch search(*mesh0, 16);
+    search.fitTransform(mesh->points());
+
+    Random rnd(42);
+    label seed = -1;
+    label nInside = 0;
+    label nOutside = 0;
+
+    for (label sample = 0; sample < 2000; ++sample)
+    {
+        // Reference-frame box [-0.2, 1.2]^3, mapped to the moved pose
+        const point q0 = 1.4*rnd.sample01<vector>() - 0.2*vector::one;
+        const point q = (R & q0) + t;
+
+        label expected = -1;
+        for (label celli = 0; celli < mesh->nCells(); ++celli)
+        {
+            if (mesh->pointInCell(q, celli, polyMesh::CELL_TETS))
+            {
+                expected = celli;
+                break;
+            }
+        }
+        (expected < 0 ? nOutside : nInside)++;
+
+        const point p0 = search.toReference(q);
+
+        // Previous result as seed (walk), random seed, no seed
+        const label fromPrev = search.findCell(p0, seed);
+        const label fromRandom =
+            search.findCell(p0, rnd.position<label>(0, mesh0->nCells() - 1));
+        const label fromNone = search.findCell(p0, -1);
+
+        EXPECT_EQ(fromPrev, expected) << "sample " << sample;
+        EXPECT_EQ(fromRandom, expected) << "sample " << sample;
+        EXPECT_EQ(fromNone, expected) << "sample " << sample;
+        EXPECT_EQ(search.findCellOctree(p0), expected);
+        EXPECT_EQ(search.findCellBruteForce(p0), expected);
+
+        if (fromPrev >= 0)
+        {
+            seed = fromPrev;
+        }
+    }
+
+    // Both kinds of queries occurred, and the walk did work
+    EXPECT_GT(nInside, 500);
+    EXPECT_GT(nOutside, 100);
+    EXPECT_GT(search.nWalk(), 0);
+}
+
+
+TEST(zoneDonorSearch, degenerateQueries)
+{
+    scratchTime time("flapFoamTest-overset", 1, 1);
+    const auto mesh0 = hexBlock(time(), "ref", 4, 0.25);
+    const polyMesh& m = *mesh0;
+
+    // maxWalk 0: octree only; maxWalk 1: the seed cell only
+    for (const label maxWalk : {0, 1, 16})
+    {
+        zoneDonorSearch search(m, maxWalk);
+
+        // Ties (vertices, face centres): a cell that contains the point,
+        // found whenever brute force finds one
+        DynamicList<point> ties(m.points());
+        ties.append(m.faceCentres());
+        forAll(ties, i)
+        {
+            const point& p = ties[i];
+            const label brute = search.findCellBruteForce(p);
+            const label walked = search.findCell(p, (7*i) % m.nCells());
+            const label tree = search.findCellOctree(p);
+
+            if (brute >= 0)
+            {
+                ASSERT_GE(walked, 0) << "point " << i;
+                ASSERT_GE(tree, 0) << "point " << i;
+                EXPECT_TRUE(m.pointInCell(p, walked, polyMesh::CELL_TETS));
+                EXPECT_TRUE(m.pointInCell(p, tree, polyMesh::CELL_TETS));
+            }
+        }
+
+        // Cell centres: exactly the cell
+        for (label celli = 0; celli < m.nCells(); ++celli)
+        {
+            const point& c = m.cellCentres()[celli];
+            EXPECT_EQ(search.findCell(c, 0), celli);
+            EXPECT_EQ(search.findCell(c, celli), celli);
+        }
+
+        // Far outside, NaN-free huge values, invalid seeds
+        EXPECT_EQ(search.findCell(point(5, 5, 5), 0), -1);
+        EXPECT_EQ(search.findCell(point(-1e30, 0, 0), -1), -1);
+        EXPECT_EQ(search.findCell(point(0.5, 0.5, 0.5), -7),
+            search.findCellBruteForce(point(0.5, 0.5, 0.5)));
+        EXPECT_EQ(search.findCell(point(0.5, 0.5, 0.5), m.nCells() + 3),
+            search.findCellBruteForce(point(0.5, 0.5, 0.5)));
+    }
+}
+
+
+TEST(zoneDonorSearch, emptyZone)
+{
+    scratchTime time("flapFoamTest-overset", 1, 1);
+    polyMesh empty
+    (
+        IOobject
+        (
+            "empty",
+            time().constant(),
+            time(),
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        pointField(),
+        faceList(),
+        labelList(),
+        labelList()
+    );
+
+    zoneDonorSearch search(empty, 16);
+    EXPECT_EQ(search.findCell(point(0, 0, 0), -1), -1);
+    EXPECT_EQ(search.findCell(point(0, 0, 0), 3), -1);
+    EXPECT_EQ(search.findCellOctree(point(0, 0, 0)), -1);
+    EXPECT_EQ(search.findCellBruteForce(point(0, 0, 0)), -1);
+    EXPECT_EQ(search.fitTransform(pointField()), 0);
+    EXPECT_TRUE(search.R() == tensor::I);
+}
+
+
+// * * * * * * * * * * * * * * * * * * main  * * * * * * * * * * * * * * * * //
+
+int main(int argc, char* argv[])
+{
+    ::testing::InitGoogleTest(&argc, argv);
+
+    FatalError.throwExceptions();
+    FatalIOError.throwExceptions();
+
+    return RUN_ALL_TESTS();
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,137 @@
+#!/usr/bin/python3
+"""
+Compare overset runs of the same case: cellTypes per written time against a
+reference run (match fraction, cells differing per type pair) and the
+stepTimers medians of the overset parts.
+
+Usage: compareCellTypes.py -dir DIR -reference NAME NAME...
+  DIR/NAME is a case with time folders holding cellTypes and
+  postProcessing/stepTimers/0/stepTimers.dat.
+Exit status 1 if a match fraction is below -minMatch (default 0.995) or a
+run has no cellTypes.
+"""
+
+import argparse
+import glob
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(
+    0,
+    os.path.join(
+        os.environ.get("FLAPFOAM_PROJECT_DIR", ""),
+        "cases", "singleWingDrone", "scripts"))
+import foamMesh  # noqa: E402
+
+
+def times(case):
+    out = []
+    for d in glob.glob(os.path.join(case, "*")):
+        b = os.path.basename(d)
+        try:
+            t = float(b)
+        except ValueError:
+            continue
+        if t > 0 and os.path.isfile(os.path.join(d, "cellTypes")):
+            out.append((t, b))
+    return sorted(out)
+
+
+def timers(case, skip):
+    path = os.path.join(case, "postProcessing", "stepTimers", "0",
+                        "stepTimers.dat")
+    if not os.path.isfile(path):
+        return {}
+    header, rows = None, []
+    for line in open(path):
+        if line.startswith("#"):
+            words = line[1:].split()
+            if words and words[0] == "time":
+                header = words
+            continue
+        vals = line.split()
+        if header and vals:
+            rows.append(dict(zip(header, map(float, vals))))
+    rows = rows[skip:]
+    # The stencil: oversetStencil plus its nested laps oversetStencil<Lap>
+    for r in rows:
+        r["stencil"] = sum(v for k, v in r.items()
+                           if k.startswith("oversetStencil"))
+    cols = ["stencil", "oversetMovePoints", "overset", "total"] + LAPS
+    return {c: (float(np.median([r.get(c, 0.0) for r in rows])), len(rows))
+            for c in cols}
+
+
+LAPS = ["oversetStencil" + p for p in
+        ("Transform", "Holes", "Donors", "Flood", "Weights")]
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("-dir", required=True)
+    ap.add_argument("-reference", required=True)
+    ap.add_argument("-minMatch", type=float, default=0.995)
+    ap.add_argument("-skip", type=int, default=2,
+                    help="first steps left out of the timer medians")
+    ap.add_argument("names", nargs="+")
+    a = ap.parse_args()
+
+    ok = True
+    ref = os.path.join(a.dir, a.reference)
+    refTimes = times(ref)
+    if not refTimes:
+        print("FAIL no cellTypes in %s" % ref)
+        return 1
+
+    for name in a.names:
+        if name == a.reference:
+            continue
+        case = os.path.join(a.dir, name)
+        worst = 1.0
+        for t, tn in refTimes:
+            f = os.path.join(case, tn, "cellTypes")
+            if not os.path.isfile(f):
+                print("FAIL %s: no cellTypes at %s" % (name, tn))
+                ok = False
+                continue
+            r = foamMesh.readScalarField(os.path.join(ref, tn, "cellTypes"))
+            c = foamMesh.readScalarField(f)
+            match = float(np.mean(r == c))
+            worst = min(worst, match)
+            diff = r != c
+            pairs = {}
+            for x, y in zip(r[diff].astype(int), c[diff].astype(int)):
+                pairs[(x, y)] = pairs.get((x, y), 0) + 1
+            print("  %-26s t=%-8s match %.6f  differing %d %s"
+                  % (name, tn, match, int(diff.sum()),
+                     " ".join("%d->%d:%d" % (k[0], k[1], v)
+                              for k, v in sorted(pairs.items()))))
+        status = "PASS" if worst >= a.minMatch else "FAIL"
+        ok = ok and worst >= a.minMatch
+        print("%s %s: cellTypes match vs %s >= %.6f over %d times "
+              "(required %.4f)"
+              % (status, name, a.reference, worst, len(refTimes), a.minMatch))
+
+    print("\nstepTimers medians [s] (first %d steps skipped):" % a.skip)
+    print("  (stencil = oversetStencil + its laps, inside the stencil's update;"
+          " the stock\n   inverseDistance run has no stencil timer: its"
+          " stencil is inside oversetMovePoints)")
+    print("  %-26s %10s %17s %10s %10s %6s   laps: %s"
+          % ("run", "stencil", "oversetMovePoints", "overset",
+             "total", "steps", " ".join(p[14:] for p in LAPS)))
+    for name in a.names:
+        tm = timers(os.path.join(a.dir, name), a.skip)
+        if not tm:
+            print("  %-26s (no stepTimers.dat)" % name)
+            continue
+        print("  %-26s %10.5f %17.5f %10.5f %10.5f %6d   %s"
+              % (name, tm["stencil"][0], tm["oversetMovePoints"][0],
+                 tm["overset"][0], tm["total"][0], tm["total"][1],
+                 " ".join("%.5f" % tm[p][0] for p in LAPS)))
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

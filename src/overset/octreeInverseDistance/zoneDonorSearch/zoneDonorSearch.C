@@ -1,0 +1,264 @@
+/*---------------------------------------------------------------------------*\
+  flapFoam: free-flight simulation of flapping-wing drones on OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "zoneDonorSearch.H"
+#include "indexedOctree.H"
+#include "treeDataCell.H"
+#include "SVD.H"
+#include "ListOps.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::label Foam::zoneDonorSearch::exitFace
+(
+    const point& p0,
+    const label celli
+) const
+{
+    const cell& cFaces = mesh_.cells()[celli];
+    const vectorField& Sf = mesh_.faceAreas();
+    const vectorField& Cf = mesh_.faceCentres();
+    const labelList& own = mesh_.faceOwner();
+
+    label best = -1;
+    scalar bestDist = 0;
+
+    forAll(cFaces, i)
+    {
+        const label facei = cFaces[i];
+        const scalar magSf = mag(Sf[facei]);
+        if (magSf < VSMALL)
+        {
+            continue;
+        }
+
+        // Signed distance outside the face plane, outward from celli
+        scalar d = ((p0 - Cf[facei]) & Sf[facei])/magSf;
+        if (own[facei] != celli)
+        {
+            d = -d;
+        }
+
+        if (d > bestDist)
+        {
+            bestDist = d;
+            best = facei;
+        }
+    }
+
+    return best;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::zoneDonorSearch::zoneDonorSearch
+(
+    const polyMesh& zoneMesh,
+    const label maxWalk
+)
+:
+    mesh_(zoneMesh),
+    maxWalk_(maxWalk),
+    bb_(treeBoundBox::invertedBox),
+    c0_(Zero),
+    R_(tensor::I),
+    c_(Zero),
+    nWalk_(0),
+    nOctree_(0),
+    nOutside_(0)
+{
+    const pointField& pts = mesh_.points();
+
+    if (mesh_.nCells() && pts.size())
+    {
+        bb_ = treeBoundBox(pts);
+        bb_.inflate(1e-6);
+
+        c0_ = sum(pts)/scalar(pts.size());
+        c_ = c0_;
+
+        // Build the cached search structures now, in the reference frame
+        (void)mesh_.tetBasePtIs();
+        (void)mesh_.cellTree();
+        (void)mesh_.cellCells();
+        (void)mesh_.faceAreas();
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::zoneDonorSearch::fitTransform(const UList<point>& points)
+{
+    return fitTransform(points, identity(points.size()));
+}
+
+
+Foam::scalar Foam::zoneDonorSearch::fitTransform
+(
+    const UList<point>& allPoints,
+    const labelUList& pointMap
+)
+{
+    const pointField& pts0 = mesh_.points();
+    const UIndirectList<point> points(allPoints, pointMap);
+
+    if (points.size() != pts0.size())
+    {
+        FatalErrorInFunction
+            << "Zone has " << pts0.size() << " reference points but "
+            << points.size() << " current points" << abort(FatalError);
+    }
+
+    if (pts0.empty())
+    {
+        R_ = tensor::I;
+        return 0;
+    }
+
+    // Static zone: identity, exactly
+    bool unmoved = true;
+    forAll(pts0, i)
+    {
+        if (points[i] != pts0[i])
+        {
+            unmoved = false;
+            break;
+        }
+    }
+    if (unmoved)
+    {
+        R_ = tensor::I;
+        c_ = c0_;
+        return 0;
+    }
+
+    // Kabsch: cross-covariance H = sum (x0 - c0)(x - c)^T = U S V^T,
+    // R = V diag(1, 1, det(V U^T)) U^T
+    point c(Zero);
+    forAll(points, i)
+    {
+        c += points[i];
+    }
+    c /= scalar(points.size());
+
+    tensor H(Zero);
+    forAll(pts0, i)
+    {
+        H += (pts0[i] - c0_)*(points[i] - c);
+    }
+
+    scalarRectangularMatrix A(3, 3);
+    for (direction i = 0; i < 3; ++i)
+    {
+        for (direction j = 0; j < 3; ++j)
+        {
+            A(i, j) = H(i, j);
+        }
+    }
+    const SVD svd(A);
+    const scalarRectangularMatrix& U = svd.U();
+    const scalarRectangularMatrix& V = svd.V();
+
+    tensor Ut(Zero), Vt(Zero);
+    for (direction i = 0; i < 3; ++i)
+    {
+        for (direction j = 0; j < 3; ++j)
+        {
+            Ut(i, j) = U(i, j);
+            Vt(i, j) = V(i, j);
+        }
+    }
+
+    tensor D(tensor::I);
+    D.zz() = sign(det(Vt & Ut.T()));
+    R_ = Vt & D & Ut.T();
+    c_ = c;
+
+    scalar maxResidual = 0;
+    forAll(pts0, i)
+    {
+        maxResidual = max(maxResidual, mag(toCurrent(pts0[i]) - points[i]));
+    }
+
+    return maxResidual;
+}
+
+
+void Foam::zoneDonorSearch::setTransform(const tensor& R, const vector& t)
+{
+    R_ = R;
+    c_ = (R_ & c0_) + t;
+}
+
+
+Foam::label Foam::zoneDonorSearch::findCellOctree(const point& p0) const
+{
+    if (!bb_.contains(p0))
+    {
+        ++nOutside_;
+        return -1;
+    }
+
+    ++nOctree_;
+    return mesh_.cellTree().findInside(p0);
+}
+
+
+Foam::label Foam::zoneDonorSearch::findCell
+(
+    const point& p0,
+    const label seed
+) const
+{
+    if (!bb_.contains(p0))
+    {
+        ++nOutside_;
+        return -1;
+    }
+
+    if (seed >= 0 && seed < mesh_.nCells())
+    {
+        const labelList& own = mesh_.faceOwner();
+        const labelList& nei = mesh_.faceNeighbour();
+
+        label celli = seed;
+        for (label step = 0; step < maxWalk_; ++step)
+        {
+            if (mesh_.pointInCell(p0, celli, polyMesh::CELL_TETS))
+            {
+                ++nWalk_;
+                return celli;
+            }
+
+            const label facei = exitFace(p0, celli);
+            if (facei < 0 || !mesh_.isInternalFace(facei))
+            {
+                // Warped cell or a boundary of the zone: ask the octree
+                break;
+            }
+            celli = (own[facei] == celli ? nei[facei] : own[facei]);
+        }
+    }
+
+    ++nOctree_;
+    return mesh_.cellTree().findInside(p0);
+}
+
+
+Foam::label Foam::zoneDonorSearch::findCellBruteForce(const point& p0) const
+{
+    for (label celli = 0; celli < mesh_.nCells(); ++celli)
+    {
+        if (mesh_.pointInCell(p0, celli, polyMesh::CELL_TETS))
+        {
+            return celli;
+        }
+    }
+    return -1;
+}
+
+
+// ************************************************************************* //
