@@ -19,9 +19,11 @@ So, with one component and no walls in the background:
                               a hole outside grew from an acceptor without
                               donors.  The component's pose is recovered by
                               a rigid fit of the wing patch points (time vs
-                              constant/polyMesh), then the hole centres are
-                              tested against the component's analytic shape
-                              (offset of the plate by `margin`,
+                              constant/polyMesh/points0 if present, i.e.
+                              the mesh as generated, else points), then
+                              the hole centres are tested against the
+                              component's analytic shape (offset of the
+                              plate by `margin`,
                               mesh/meshGen.json).
 
 Also reported: calculated / interpolated / hole cells per zone, the wing
@@ -142,7 +144,11 @@ def main(argv=None):
 
     pm = os.path.join(case, "constant", "polyMesh")
     offs, verts = fm.readFaces(os.path.join(pm, "faces"))
-    pts0 = fm.readPoints(os.path.join(pm, "points"))
+    # the mesh as generated (pose of meshGen.json): points0 when the mesh was
+    # moved to the start state of the motion (eABAInitialMesh)
+    p0 = os.path.join(pm, "points0")
+    pts0 = fm.readPoints(p0 if (os.path.exists(p0) or os.path.exists(p0 + ".gz"))
+                         else os.path.join(pm, "points"))
     owner = fm.readLabels(os.path.join(pm, "owner"))
     neighbour = fm.readLabels(os.path.join(pm, "neighbour"))
     nCells = fm.readNCells(os.path.join(pm, "owner"))

@@ -400,7 +400,13 @@ Foam::eABAMeshMotion::eABAMeshMotion
 
     model_.writeJointMap(Info);
     openOutput();
-    writeOutput();
+
+    // The start row of a fresh run; a restart's start row is the last row
+    // of the run it continues (with its load)
+    if (!restart)
+    {
+        writeOutput();
+    }
 }
 
 

@@ -1,0 +1,346 @@
+#!/usr/bin/python3
+"""
+Checks of single-wing drone runs (used by Alltest).  Each prints one
+"PASS <name> <numbers>" or "FAIL <name> <numbers>" line; the exit status is
+non-zero on failure.
+
+    checkRun.py prescribed CASE [--tol 1e-12] [--tolTable 1e-11]
+        The prescribed joints (imposedMotion entries of CASE/constant/
+        dynamicMeshDict) against the analytic Wang motion at every step:
+        q, qDot, qDdot from <time>/uniform/rigidBodyMotionState (17
+        digits; a run written every step has one per step) and from every
+        row of postProcessing/eABAMeshMotion/*/joints.dat (12 significant
+        digits: its rounding alone is up to ~4e-12).  Error of derivative
+        k: |sim - analytic| / (A omega^k), A the amplitude, omega = 2 pi f.
+
+    checkRun.py timers CASE [--tol 0.05] [--nStartup 2]
+        stepTimers.dat (all start folders): closure of rbd + overset +
+        pimple against total, as 1 - mean(rbd + overset + pimple)/mean(total)
+        over the steps after the first nStartup of each file (PASS if below
+        tol), and the largest per-step |total - sum|/total (reported: on
+        shared cores one step can be descheduled between two timers).
+
+    checkRun.py compare A B [--columns q_0,qDot_0,...] [--tol 1e-6]
+                            [--rows last|all] [--state]
+        joints.dat of case A against case B (rows matched by time).
+        Relative difference of a value: |a - b| / max(|a|, |b|, floor) with
+        floor = 1e-3 x the largest |value| of that column over A's rows, so
+        that a quantity passing through zero at the compared instant is
+        judged against its own scale rather than a vanishing denominator.
+        --state also compares the last <time>/uniform/rigidBodyMotionState
+        (17 digits; q, qDot, qDdot of every joint, same floor).
+
+    checkRun.py initial CASE --q 2:0,3:0.785398163397 [--qDotSign 2:-1]
+                             [--tol 1e-12]
+        The first row of joints.dat: q_i = value (absolute difference) and
+        the sign of qDot_i (e.g. -midStroke: phi(0) = 0 decreasing,
+        alpha(0) = -45 deg).
+
+    checkRun.py rbs A B [--tol 1e-10]
+        Every row of A's postProcessing/eABAMeshMotion/0/joints.dat against
+        B's postProcessing/rigidBodySimulate/0/joints.dat (all columns, the
+        same relative difference).
+"""
+
+import argparse
+import glob
+import math
+import os
+import re
+import sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import plotRun  # noqa: E402
+
+
+# --------------------------------------------------------------------------
+
+def report(ok, name, text):
+    print("%s %s %s" % ("PASS" if ok else "FAIL", name, text))
+    return 0 if ok else 1
+
+
+def timeFolders(case):
+    """Numeric time folders of a case (float, path), in order."""
+    out = []
+    for d in glob.glob(os.path.join(case, "[0-9]*")):
+        try:
+            out.append((float(os.path.basename(d)), d))
+        except ValueError:
+            pass
+    return sorted(out)
+
+
+def readState(path):
+    """{q, qDot, qDdot: arrays, t: float} of a rigidBodyMotionState."""
+    with open(path) as f:
+        text = f.read()
+    text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
+    text = re.sub(r"//[^\n]*", " ", text)
+    state = {}
+    for key in ("q", "qDot", "qDdot"):
+        m = re.search(r"\b%s\s+\d+\s*\(([^)]*)\)\s*;" % key, text)
+        if m is None:
+            m = re.search(r"\b%s\s+\(([^)]*)\)\s*;" % key, text)
+        state[key] = np.array(m.group(1).split(), dtype=float)
+    m = re.search(r"\bt\s+([^;\s]+)\s*;", text)
+    state["t"] = float(m.group(1))
+    return state
+
+
+def states(case):
+    """The rigidBodyMotionState of every time folder: list of dicts."""
+    out = []
+    for _, d in timeFolders(case):
+        p = os.path.join(d, "uniform", "rigidBodyMotionState")
+        if os.path.isfile(p):
+            out.append(readState(p))
+    return out
+
+
+def joints(case, name="eABAMeshMotion"):
+    """(columns, rows) of joints.dat joined over the start folders."""
+    base = os.path.join(case, "postProcessing", name)
+    if not plotRun.startFolders(base):
+        sys.exit("checkRun: no %s/<time>/joints.dat" % base)
+    return plotRun.joinedTable(base, "joints.dat", keepEarlierAtStart=False)
+
+
+def relDiff(a, b, floor):
+    return np.abs(a - b)/np.maximum(np.maximum(np.abs(a), np.abs(b)), floor)
+
+
+def multibodyDict(case):
+    d = plotRun.readFoamDict(os.path.join(case, "constant",
+                                          "dynamicMeshDict"))
+    return d.get("eABAMeshMotionCoeffs", d)
+
+
+# --------------------------------------------------------------------------
+
+def checkPrescribed(args):
+    imposed = plotRun.imposedJoints(multibodyDict(args.case))
+    if not imposed:
+        return report(False, "prescribed", "no imposedMotion entries")
+
+    def errors(t, q, qDot, qDdot, qi, ev):
+        w = 2.0*math.pi*ev.frequency
+        qa, qDa, qDDa = ev(t)
+        return (np.abs(q - qa)/ev.amplitude,
+                np.abs(qDot - qDa)/(ev.amplitude*w),
+                np.abs(qDdot - qDDa)/(ev.amplitude*w*w))
+
+    # full-precision states
+    sts = states(args.case)
+    eState = np.zeros(3)
+    for s in sts:
+        for qi, ev in imposed.items():
+            e = errors(s["t"], s["q"][qi], s["qDot"][qi], s["qDdot"][qi],
+                       qi, ev)
+            eState = np.maximum(eState, [float(x) for x in e])
+
+    # every row of joints.dat
+    cols, J = joints(args.case)
+    c = {n: i for i, n in enumerate(cols)}
+    eTable = np.zeros(3)
+    for qi, ev in imposed.items():
+        e = errors(J[:, 0], J[:, c["q_%d" % qi]], J[:, c["qDot_%d" % qi]],
+                   J[:, c["qDdot_%d" % qi]], qi, ev)
+        eTable = np.maximum(eTable, [float(x.max()) for x in e])
+
+    ok = len(sts) > 0 and eState.max() <= args.tol \
+        and eTable.max() <= args.tolTable
+    return report(ok, args.name or "prescribed",
+                  "joints %s: state files (17 digits, %d steps) max error "
+                  "q %.2e qDot %.2e qDdot %.2e (tol %g); joints.dat (12 "
+                  "digits, %d rows) q %.2e qDot %.2e qDdot %.2e (tol %g); "
+                  "error = |sim - analytic|/(A omega^k)"
+                  % ("/".join("q_%d" % q for q in sorted(imposed)), len(sts),
+                     eState[0], eState[1], eState[2], args.tol, len(J),
+                     eTable[0], eTable[1], eTable[2], args.tolTable))
+
+
+def checkTimers(args):
+    import importlib.util
+    spec = importlib.util.spec_from_file_location(
+        "plotStepTimers", plotRun.PLOT_STEP_TIMERS)
+    pst = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(pst)
+    files = pst.find_files(os.path.join(args.case, "postProcessing",
+                                        "stepTimers"))
+    rows = []
+    for f in files:
+        r = pst.read_file(f)
+        rows.extend(r[args.nStartup:])
+    if not rows:
+        return report(False, args.name or "timers", "no steps after the "
+                      "start-up rows")
+    total = np.array([r["total"] for r in rows])
+    parts = np.array([r["rbd"] + r["overset"] + r["pimple"] for r in rows])
+    closureMean = abs(1.0 - parts.mean()/total.mean())
+    perStep = np.abs(total - parts)/total
+    share = {k: np.mean([r[k] for r in rows])/total.mean()
+             for k in ("rbd", "overset", "pimple")}
+    return report(closureMean <= args.tol, args.name or "timers",
+                  "%d steps: |1 - mean(rbd+overset+pimple)/mean(total)| = "
+                  "%.2f %% (tol %g %%), per-step max %.2f %%; mean total "
+                  "%.3g s/step, shares rbd %.2f %% overset %.1f %% pimple "
+                  "%.1f %%"
+                  % (len(rows), 100*closureMean, 100*args.tol,
+                     100*perStep.max(), total.mean(), 100*share["rbd"],
+                     100*share["overset"], 100*share["pimple"]))
+
+
+def matchRows(A, B):
+    """Indices of rows of A and B with the same time."""
+    ia, ib = [], []
+    j = 0
+    for i, t in enumerate(A[:, 0]):
+        eps = 1e-9*max(abs(t), 1e-12)
+        while j < len(B) and B[j, 0] < t - eps:
+            j += 1
+        if j < len(B) and abs(B[j, 0] - t) <= eps:
+            ia.append(i)
+            ib.append(j)
+    return np.array(ia, dtype=int), np.array(ib, dtype=int)
+
+
+def checkCompare(args):
+    ca, A = joints(args.a)
+    cb, B = joints(args.b)
+    cols = args.columns.split(",") if args.columns else ca[1:]
+    ia, ib = matchRows(A, B)
+    if len(ia) == 0:
+        return report(False, args.name or "compare", "no common times")
+    if args.rows == "last":
+        if A[ia[-1], 0] != A[-1, 0] or B[ib[-1], 0] != B[-1, 0]:
+            return report(False, args.name or "compare",
+                          "last rows at different times (%g, %g)"
+                          % (A[-1, 0], B[-1, 0]))
+        ia, ib = ia[-1:], ib[-1:]
+    worst = {}
+    for col in cols:
+        i, k = ca.index(col), cb.index(col)
+        floor = 1e-3*np.abs(A[:, i]).max() + 1e-300
+        worst[col] = float(relDiff(A[ia, i], B[ib, k], floor).max())
+    text = ", ".join("%s %.1e" % (k, v) for k, v in worst.items())
+    maxRel = max(worst.values())
+
+    if args.state:
+        sa, sb = states(args.a), states(args.b)
+        if not sa or not sb or abs(sa[-1]["t"] - sb[-1]["t"]) > \
+                1e-9*abs(sa[-1]["t"]):
+            return report(False, args.name or "compare",
+                          "no rigidBodyMotionState at a common last time")
+        sWorst = {}
+        for key, pre in (("q", "q_"), ("qDot", "qDot_"), ("qDdot", "qDdot_")):
+            for qi in range(len(sa[-1][key])):
+                col = "%s%d" % (pre, qi)
+                floor = 1e-3*np.abs(A[:, ca.index(col)]).max() + 1e-300
+                sWorst[col] = float(relDiff(sa[-1][key][qi], sb[-1][key][qi],
+                                            floor))
+        worstKey = max(sWorst, key=sWorst.get)
+        text += "; state at t = %g (17 digits): max %.1e (%s), q %s" % (
+            sa[-1]["t"], sWorst[worstKey], worstKey,
+            " ".join("%.1e" % sWorst["q_%d" % qi]
+                     for qi in range(len(sa[-1]["q"]))))
+        maxRel = max(maxRel, max(sWorst.values()))
+
+    return report(maxRel <= args.tol, args.name or "compare",
+                  "%s rows (%d): max relative difference %.2e (tol %g): %s"
+                  % (args.rows, len(ia), maxRel, args.tol, text))
+
+
+def checkInitial(args):
+    cols, J = joints(args.case)
+    c = {n: i for i, n in enumerate(cols)}
+    ok = True
+    parts = []
+    for item in args.q.split(","):
+        qi, value = item.split(":")
+        err = abs(J[0, c["q_" + qi]] - float(value))
+        ok = ok and err <= args.tol
+        parts.append("q_%s %.12g (expected %s, |diff| %.1e)"
+                     % (qi, J[0, c["q_" + qi]], value, err))
+    for item in (args.qDotSign.split(",") if args.qDotSign else []):
+        qi, sign = item.split(":")
+        v = J[0, c["qDot_" + qi]]
+        ok = ok and v*float(sign) > 0
+        parts.append("qDot_%s %.6g (sign %s)" % (qi, v, sign))
+    return report(ok, args.name or "initial", "t = %g: %s (tol %g)"
+                  % (J[0, 0], ", ".join(parts), args.tol))
+
+
+def checkRbs(args):
+    ca, A = joints(args.a)
+    cb, B = joints(args.b, "rigidBodySimulate")
+    if ca != cb:
+        return report(False, args.name or "rbs", "columns differ: %s / %s"
+                      % (ca, cb))
+    ia, ib = matchRows(A, B)
+    if len(ia) != len(A) or len(ib) != len(B):
+        return report(False, args.name or "rbs",
+                      "rows do not align: %d eABAMeshMotion, %d "
+                      "rigidBodySimulate, %d common" % (len(A), len(B),
+                                                         len(ia)))
+    worst, worstCol = 0.0, None
+    for i, col in enumerate(ca[1:], start=1):
+        floor = 1e-3*np.abs(A[:, i]).max() + 1e-300
+        r = float(relDiff(A[ia, i], B[ib, i], floor).max())
+        if r > worst:
+            worst, worstCol = r, col
+    return report(worst <= args.tol, args.name or "rbs",
+                  "%d rows x %d columns: max relative difference %.2e (%s) "
+                  "(tol %g; eABAMeshMotion writes 12 digits)"
+                  % (len(ia), len(ca) - 1, worst, worstCol, args.tol))
+
+
+def main():
+    ap = argparse.ArgumentParser(
+        description="Checks of single-wing drone runs (PASS/FAIL lines)")
+    ap.add_argument("--name", default=None, help="name on the line")
+    sub = ap.add_subparsers(dest="cmd", required=True)
+
+    p = sub.add_parser("prescribed")
+    p.add_argument("case")
+    p.add_argument("--tol", type=float, default=1e-12)
+    p.add_argument("--tolTable", type=float, default=1e-11)
+    p.set_defaults(func=checkPrescribed)
+
+    p = sub.add_parser("timers")
+    p.add_argument("case")
+    p.add_argument("--tol", type=float, default=0.05)
+    p.add_argument("--nStartup", type=int, default=2)
+    p.set_defaults(func=checkTimers)
+
+    p = sub.add_parser("compare")
+    p.add_argument("a")
+    p.add_argument("b")
+    p.add_argument("--columns", default=None)
+    p.add_argument("--tol", type=float, default=1e-6)
+    p.add_argument("--rows", choices=("last", "all"), default="last")
+    p.add_argument("--state", action="store_true")
+    p.set_defaults(func=checkCompare)
+
+    p = sub.add_parser("initial")
+    p.add_argument("case")
+    p.add_argument("--q", required=True)
+    p.add_argument("--qDotSign", default=None)
+    p.add_argument("--tol", type=float, default=1e-12)
+    p.set_defaults(func=checkInitial)
+
+    p = sub.add_parser("rbs")
+    p.add_argument("a")
+    p.add_argument("b")
+    p.add_argument("--tol", type=float, default=1e-10)
+    p.set_defaults(func=checkRbs)
+
+    args = ap.parse_args()
+    return args.func(args)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
