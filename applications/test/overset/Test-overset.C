@@ -20,6 +20,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "zoneDonorSearch.H"
+#include "octreeInverseDistanceCellCellStencil.H"
 #include "polyMesh.H"
 #include "cellModel.H"
 #include "cellShapeList.H"
@@ -339,6 +340,58 @@ TEST(zoneDonorSearch, emptyZone)
     EXPECT_EQ(search.findCellBruteForce(point(0, 0, 0)), -1);
     EXPECT_EQ(search.fitTransform(pointField()), 0);
     EXPECT_TRUE(search.R() == tensor::I);
+}
+
+
+TEST(octreeInverseDistance, orphansAreCellsNeedingADonorWithoutOne)
+{
+    using stencil = cellCellStencils::octreeInverseDistance;
+    const label C = cellCellStencil::CALCULATED;
+    const label I = cellCellStencil::INTERPOLATED;
+    const label H = cellCellStencil::HOLE;
+
+    // Cells: types after hole marking, previous types, overset-patch cells,
+    // donors found
+    //   0: overset-patch cell with a donor              -> fine
+    //   1: overset-patch cell without a donor           -> orphan
+    //   2: overset-patch cell marked hole               -> not an orphan
+    //   3: was a hole, calculated now, with a donor     -> fine
+    //   4: was a hole, calculated now, without a donor  -> orphan
+    //   5: was interpolated, calculated now, no donor   -> fine (no need)
+    //   6: was a hole, still a hole                     -> not an orphan
+    const labelList types({C, C, H, C, C, C, H});
+    const labelList prevTypes({C, I, C, H, H, I, H});
+    bitSet isOverset(types.size());
+    isOverset.set(labelList({0, 1, 2}));
+    labelListList donors(types.size());
+    donors[0] = labelList(1, 42);
+    donors[3] = labelList(1, 7);
+
+    EXPECT_EQ(stencil::findOrphans(types, prevTypes, isOverset, donors),
+        labelList({1, 4}));
+
+    for (label celli = 0; celli < types.size(); ++celli)
+    {
+        EXPECT_EQ
+        (
+            stencil::needsDonor
+            (
+                types[celli], prevTypes[celli], isOverset[celli]
+            ),
+            celli == 0 || celli == 1 || celli == 3 || celli == 4
+        ) << "cell " << celli;
+    }
+
+    // First update: no previous types (as if all calculated); empty input
+    EXPECT_EQ(stencil::findOrphans(types, labelList(), isOverset, donors),
+        labelList({1}));
+    EXPECT_TRUE
+    (
+        stencil::findOrphans
+        (
+            labelList(), labelList(), bitSet(), labelListList()
+        ).empty()
+    );
 }
 
 

@@ -65,7 +65,7 @@ def timers(case, skip):
 
 
 LAPS = ["oversetStencil" + p for p in
-        ("Transform", "Holes", "Donors", "Flood", "Weights")]
+        ("Transform", "Voxels", "Holes", "Donors", "Flood", "Weights")]
 
 
 def main():
@@ -121,15 +121,23 @@ def main():
     print("  %-26s %10s %17s %10s %10s %6s   laps: %s"
           % ("run", "stencil", "oversetMovePoints", "overset",
              "total", "steps", " ".join(p[14:] for p in LAPS)))
+    stencil = {}
     for name in a.names:
         tm = timers(os.path.join(a.dir, name), a.skip)
         if not tm:
             print("  %-26s (no stepTimers.dat)" % name)
             continue
+        stencil[name] = tm["stencil"][0]
         print("  %-26s %10.5f %17.5f %10.5f %10.5f %6d   %s"
               % (name, tm["stencil"][0], tm["oversetMovePoints"][0],
                  tm["overset"][0], tm["total"][0], tm["total"][1],
                  " ".join("%.5f" % tm[p][0] for p in LAPS)))
+    # The stock update timed by the same timer (octreeStock) against the
+    # cached update
+    if stencil.get("octreeStock") and stencil.get("octreeInverseDistance"):
+        print("\nstencil update speed-up octreeInverseDistance vs stock"
+              " (octreeStock), ratio of medians: %.1f"
+              % (stencil["octreeStock"] / stencil["octreeInverseDistance"]))
     return 0 if ok else 1
 
 

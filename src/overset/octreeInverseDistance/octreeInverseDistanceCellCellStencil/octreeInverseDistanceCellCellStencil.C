@@ -11,6 +11,7 @@
 #include "mapDistribute.H"
 #include "stepTimers.H"
 #include "Time.H"
+#include "cellSet.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -35,6 +36,15 @@ Foam::cellCellStencils::octreeInverseDistance::searchTypeNames
 
 const Foam::word
 Foam::cellCellStencils::octreeInverseDistance::stencilPart("oversetStencil");
+
+const Foam::label
+Foam::cellCellStencils::octreeInverseDistance::voxelBlock(8);
+
+const Foam::word
+Foam::cellCellStencils::octreeInverseDistance::orphanSetName
+(
+    "octreeInverseDistanceOrphans"
+);
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -116,6 +126,29 @@ void Foam::cellCellStencils::octreeInverseDistance::buildZone
     zoneSearch_.set(zonei, new zoneDonorSearch(subMesh, maxWalk_));
 
     prevDonor_[zonei] = labelList(mesh_.nCells(), -1);
+
+    // Bounding radius of each zone cell about its centre
+    const labelList& cellMap = zoneParts_[zonei].cellMap();
+    const pointField& points = mesh_.points();
+    const pointField& cc = mesh_.cellCentres();
+    const cellList& cells = mesh_.cells();
+    const faceList& faces = mesh_.faces();
+
+    scalarField& radius = cellRadius_[zonei];
+    radius.setSize(cellMap.size());
+    forAll(cellMap, i)
+    {
+        const label celli = cellMap[i];
+        scalar r2 = 0;
+        for (const label facei : cells[celli])
+        {
+            for (const label pointi : faces[facei])
+            {
+                r2 = max(r2, magSqr(points[pointi] - cc[celli]));
+            }
+        }
+        radius[i] = Foam::sqrt(r2);
+    }
 }
 
 
@@ -131,6 +164,21 @@ void Foam::cellCellStencils::octreeInverseDistance::buildCache
     zoneSearch_.setSize(nZones);
     zoneParts_.setSize(nZones);
     prevDonor_.setSize(nZones);
+    cellRadius_.setSize(nZones);
+    zoneResidual_.setSize(nZones, Zero);
+
+    // Voxel maps: refilled at the next update
+    patchParts_.clear();
+    patchBlocks_.clear();
+    patchParts_.setSize(nZones);
+    patchBlocks_.setSize(nZones);
+    patchFilled_.setSize(nZones);
+    patchFilledBb_.setSize(nZones);
+    patchFilledDivs_.setSize(nZones, labelVector::zero);
+    patchFilledSmallVec_.setSize(nZones, Zero);
+    patchFilledPoints_.setSize(nZones);
+    patchMin_.setSize(nZones);
+    patchMax_.setSize(nZones);
 
     for (label zonei = 0; zonei < nZones; ++zonei)
     {
@@ -144,15 +192,52 @@ void Foam::cellCellStencils::octreeInverseDistance::buildCache
 }
 
 
+bool Foam::cellCellStencils::octreeInverseDistance::voxelsCurrent
+(
+    const label zonei,
+    const boundBox& bb,
+    const labelVector& nDivs
+) const
+{
+    if
+    (
+        !patchParts_.set(zonei)
+     || patchFilledDivs_[zonei] != nDivs
+     || patchFilledBb_[zonei] != bb
+     || patchFilledSmallVec_[zonei] != smallVec_
+    )
+    {
+        return false;
+    }
+
+    const labelList& pointMap = zoneParts_[zonei].pointMap();
+    const pointField& points = mesh_.points();
+    const pointField& filledPoints = patchFilledPoints_[zonei];
+
+    if (filledPoints.size() != pointMap.size())
+    {
+        return false;
+    }
+    forAll(pointMap, i)
+    {
+        if (points[pointMap[i]] != filledPoints[i])
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+
 void Foam::cellCellStencils::octreeInverseDistance::markZoneBoundaries
 (
     const label zonei,
     const labelList& zoneID,
     const boundBox& bb,
     const labelVector& nDivs,
-    PackedList<2>& patchTypes,
+    const bool fillVoxels,
     labelList& patchCellTypes
-) const
+)
 {
     // Voxels of the zone's boundary faces at the current pose: the zones
     // share no faces, so the zone's sub-mesh boundary is the mesh boundary
@@ -161,7 +246,13 @@ void Foam::cellCellStencils::octreeInverseDistance::markZoneBoundaries
     const fvBoundaryMesh& pbm = mesh_.boundary();
     const pointField& points = mesh_.points();
 
-    patchTypes = patchCellType::OTHER;
+    PackedList<2>& patchTypes = patchParts_[zonei];
+    PackedList<1>& blocks = patchBlocks_[zonei];
+    DynamicList<boundBox>& filled = patchFilled_[zonei];
+    labelVector& patchMin = patchMin_[zonei];
+    labelVector& patchMax = patchMax_[zonei];
+    const labelVector maxIndex(nDivs - labelVector::one);
+    const labelVector nBlocks(blockDivisions(nDivs));
 
     // Two passes, as the stock stencil: proper patches, then overset
     // patches on top
@@ -191,15 +282,271 @@ void Foam::cellCellStencils::octreeInverseDistance::markZoneBoundaries
                 }
                 patchCellTypes[fc[i]] = val;
 
+                if (!fillVoxels)
+                {
+                    continue;
+                }
+
                 boundBox faceBb(points, pp[i], false);
                 faceBb.min() -= smallVec_;
                 faceBb.max() += smallVec_;
 
-                if (bb.overlaps(faceBb))
+                if (!bb.overlaps(faceBb))
                 {
-                    fill(patchTypes, bb, nDivs, faceBb, val);
+                    continue;
+                }
+
+                const labelVector lo
+                (
+                    max(labelVector::zero, index3(bb, nDivs, faceBb.min()))
+                );
+                const labelVector hi(index3(bb, nDivs, faceBb.max()));
+
+                if (!oversetPass)
+                {
+                    // Voxel range and blocks of the PATCH voxels (a
+                    // superset: OVERSET may overwrite)
+                    patchMin = min(patchMin, lo);
+                    patchMax = max(patchMax, hi);
+
+                    const labelVector top(min(maxIndex, hi));
+                    const labelVector b0(lo/voxelBlock);
+                    const labelVector b1(top/voxelBlock);
+                    for (label bi = b0.x(); bi <= b1.x(); ++bi)
+                    {
+                        for (label bj = b0.y(); bj <= b1.y(); ++bj)
+                        {
+                            for (label bk = b0.z(); bk <= b1.z(); ++bk)
+                            {
+                                blocks.set
+                                (
+                                    index(nBlocks, labelVector(bi, bj, bk))
+                                );
+                            }
+                        }
+                    }
+                }
+                else if (!rangesMeet(lo, hi, patchMin, patchMax, nDivs))
+                {
+                    // Overwrites no PATCH voxel; OVERSET and OTHER voxels
+                    // are the same to the hole test (overlaps: PATCH only)
+                    continue;
+                }
+
+                fill(patchTypes, bb, nDivs, faceBb, val);
+                filled.append(faceBb);
+            }
+        }
+    }
+
+    if (fillVoxels)
+    {
+        // What the map was filled with
+        patchFilledBb_[zonei] = bb;
+        patchFilledDivs_[zonei] = nDivs;
+        patchFilledSmallVec_[zonei] = smallVec_;
+
+        const labelList& pointMap = zoneParts_[zonei].pointMap();
+        pointField& filledPoints = patchFilledPoints_[zonei];
+        filledPoints.setSize(pointMap.size());
+        forAll(pointMap, i)
+        {
+            filledPoints[i] = points[pointMap[i]];
+        }
+    }
+}
+
+
+Foam::labelVector
+Foam::cellCellStencils::octreeInverseDistance::blockDivisions
+(
+    const labelVector& nDivs
+)
+{
+    return labelVector
+    (
+        (nDivs.x() + voxelBlock - 1)/voxelBlock,
+        (nDivs.y() + voxelBlock - 1)/voxelBlock,
+        (nDivs.z() + voxelBlock - 1)/voxelBlock
+    );
+}
+
+
+bool Foam::cellCellStencils::octreeInverseDistance::rangesMeet
+(
+    const labelVector& lo,
+    const labelVector& hi,
+    const labelVector& pMin,
+    const labelVector& pMax,
+    const labelVector& nDivs
+)
+{
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (hi[d] < pMin[d] || lo[d] > min(pMax[d], nDivs[d] - 1))
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+
+void Foam::cellCellStencils::octreeInverseDistance::clearVoxels
+(
+    const label zonei,
+    const labelVector& nDivs
+)
+{
+    const label nVoxels = nDivs.x()*nDivs.y()*nDivs.z();
+    const labelVector nB(blockDivisions(nDivs));
+
+    if
+    (
+        patchParts_.set(zonei)
+     && patchParts_[zonei].size() == nVoxels
+     && patchFilledDivs_[zonei] == nDivs
+    )
+    {
+        // Reset last step's voxels (fill with the same boxes, map box and
+        // divisions sets exactly the voxels set then)
+        for (const boundBox& faceBb : patchFilled_[zonei])
+        {
+            fill
+            (
+                patchParts_[zonei],
+                patchFilledBb_[zonei],
+                nDivs,
+                faceBb,
+                patchCellType::OTHER
+            );
+        }
+
+        if (debug)
+        {
+            const PackedList<2>& map = patchParts_[zonei];
+            for (label i = 0; i < map.size(); ++i)
+            {
+                if (map.get(i) != patchCellType::OTHER)
+                {
+                    FatalErrorInFunction
+                        << "voxel " << i << " of zone " << zonei
+                        << " not reset" << abort(FatalError);
                 }
             }
+        }
+        patchBlocks_[zonei] = 0u;
+    }
+    else
+    {
+        patchParts_.set
+        (
+            zonei,
+            new PackedList<2>(nVoxels, patchCellType::OTHER)
+        );
+        patchBlocks_.set
+        (
+            zonei,
+            new PackedList<1>(nB.x()*nB.y()*nB.z(), 0u)
+        );
+    }
+    patchFilled_[zonei].clear();
+    patchMin_[zonei] = labelVector::uniform(labelMax);
+    patchMax_[zonei] = labelVector::uniform(-1);
+}
+
+
+void Foam::cellCellStencils::octreeInverseDistance::markHoles
+(
+    const label srcI,
+    const label tgtI,
+    const List<treeBoundBoxList>& patchBb,
+    const List<labelVector>& patchDivisions,
+    labelList& allCellTypes
+) const
+{
+    const treeBoundBox& srcPatchBb = patchBb[srcI][0];
+    const labelVector& nDivs = patchDivisions[srcI];
+    const labelVector& pMin = patchMin_[srcI];
+    const labelVector& pMax = patchMax_[srcI];
+    const PackedList<2>& srcPatchTypes = patchParts_[srcI];
+    const PackedList<1>& blocks = patchBlocks_[srcI];
+    const labelVector nBlocks(blockDivisions(nDivs));
+    const labelVector maxIndex(nDivs - labelVector::one);
+
+    if
+    (
+        !srcPatchBb.overlaps(patchBb[tgtI][0])
+     || pMin.x() > pMax.x() || pMin.y() > pMax.y() || pMin.z() > pMax.z()
+    )
+    {
+        return;
+    }
+
+    const labelList& cellMap = zoneParts_[tgtI].cellMap();
+    const scalarField& radius = cellRadius_[tgtI];
+    const pointField& cc = mesh_.cellCentres();
+
+    // Deviation from rigid motion (points and centre) and round-off
+    const scalar margin = 4*zoneResidual_[tgtI];
+
+    forAll(cellMap, i)
+    {
+        const label celli = cellMap[i];
+
+        // Voxel range of a box holding the cell's bounding box
+        const vector r
+        (
+            vector::uniform((1 + 1e-6)*radius[i] + margin) + smallVec_
+        );
+        const labelVector lo
+        (
+            max(labelVector::zero, index3(srcPatchBb, nDivs, cc[celli] - r))
+        );
+        const labelVector hi
+        (
+            min(maxIndex, index3(srcPatchBb, nDivs, cc[celli] + r))
+        );
+
+        if (!rangesMeet(lo, hi, pMin, pMax, nDivs))
+        {
+            continue;
+        }
+
+        // Any block holding a PATCH voxel?
+        const labelVector b0(lo/voxelBlock);
+        const labelVector b1(hi/voxelBlock);
+        bool candidate = false;
+        for (label bi = b0.x(); !candidate && bi <= b1.x(); ++bi)
+        {
+            for (label bj = b0.y(); !candidate && bj <= b1.y(); ++bj)
+            {
+                for (label bk = b0.z(); !candidate && bk <= b1.z(); ++bk)
+                {
+                    candidate =
+                        blocks.get(index(nBlocks, labelVector(bi, bj, bk)));
+                }
+            }
+        }
+        if (!candidate)
+        {
+            continue;
+        }
+
+        // The stock test
+        treeBoundBox cBb(cellBb(mesh_, celli));
+        cBb.min() -= smallVec_;
+        cBb.max() += smallVec_;
+
+        if
+        (
+            overlaps
+            (
+                srcPatchBb, nDivs, srcPatchTypes, cBb, patchCellType::PATCH
+            )
+        )
+        {
+            allCellTypes[celli] = HOLE;
         }
     }
 }
@@ -258,6 +605,185 @@ void Foam::cellCellStencils::octreeInverseDistance::findDonors
 }
 
 
+Foam::labelList Foam::cellCellStencils::octreeInverseDistance::findOrphans
+(
+    const labelUList& cellTypes,
+    const labelUList& prevCellTypes,
+    const bitSet& isOversetPatchCell,
+    const labelListList& stencil
+)
+{
+    DynamicList<label> orphans;
+    forAll(cellTypes, celli)
+    {
+        const label prevType =
+            celli < prevCellTypes.size() ? prevCellTypes[celli] : CALCULATED;
+
+        if
+        (
+            needsDonor(cellTypes[celli], prevType, isOversetPatchCell[celli])
+         && stencil[celli].empty()
+        )
+        {
+            orphans.append(celli);
+        }
+    }
+    return labelList(std::move(orphans));
+}
+
+
+void Foam::cellCellStencils::octreeInverseDistance::reportOrphans
+(
+    const labelList& orphans
+) const
+{
+    if (orphans.size())
+    {
+        const pointField& cc = mesh_.cellCentres();
+        const labelList& zoneID = this->zoneID();
+        const label nShow = min(orphans.size(), label(5));
+
+        Info<< type() << " : " << orphans.size() << " orphan cells (need a"
+            << " donor, found none; now holes) at time "
+            << mesh_.time().timeName() << ", first " << nShow << ":" << nl;
+        for (label i = 0; i < nShow; ++i)
+        {
+            const label celli = orphans[i];
+            Info<< "    cell " << celli << " zone " << zoneID[celli]
+                << " at " << cc[celli] << nl;
+        }
+        Info<< "    cellSet " << orphanSetName << endl;
+    }
+
+    if (orphans.size() || mesh_.time().writeTime())
+    {
+        cellSet set
+        (
+            mesh_,
+            orphanSetName,
+            labelHashSet(orphans),
+            IOobject::NO_WRITE
+        );
+        // In the time folder (the default, facesInstance, is constant for
+        // a moving mesh without topology changes)
+        set.instance() = mesh_.time().timeName();
+        set.write();
+    }
+}
+
+
+bool Foam::cellCellStencils::octreeInverseDistance::createStencilSerial
+(
+    const globalIndex& globalCells
+)
+{
+    // Donors: local cells (serial)
+    const label nCells = mesh_.nCells();
+    const labelList& acceptors = interpolationCells_;
+
+    labelList donors(acceptors.size());
+    forAll(acceptors, i)
+    {
+        donors[i] = globalCells.toLocal(donorGlobal_[i]);
+    }
+
+    // The donors and their valid face neighbours, as the stock createStencil
+    boolList isValidDonor(nCells, true);
+    forAll(cellTypes_, celli)
+    {
+        if (cellTypes_[celli] == HOLE)
+        {
+            isValidDonor[celli] = false;
+        }
+    }
+
+    labelListList donorCellCells;
+    pointListList donorCellCentres;
+    globalCellCells
+    (
+        globalCells,
+        mesh_,
+        isValidDonor,
+        labelHashSet(donors).sortedToc(),
+        donorCellCells,
+        donorCellCentres
+    );
+
+    // Addressing unchanged?  Same interpolated cells with the same stencils
+    bool same =
+        cellInterpolationMap_.valid()
+     && stencilGlobal_.size() == nCells
+     && cellStencil_.size() == nCells
+     && cellInterpolationWeights_.size() == nCells;
+
+    if (same)
+    {
+        label nStencil = 0;
+        forAll(stencilGlobal_, celli)
+        {
+            if (stencilGlobal_[celli].size())
+            {
+                ++nStencil;
+            }
+        }
+        same = (nStencil == acceptors.size());
+    }
+    for (label i = 0; same && i < acceptors.size(); ++i)
+    {
+        same = (stencilGlobal_[acceptors[i]] == donorCellCells[donors[i]]);
+    }
+
+    // Weights from the acceptor's centre (stock stencilWeights)
+    const pointField& cc = mesh_.cellCentres();
+
+    if (same)
+    {
+        forAll(acceptors, i)
+        {
+            stencilWeights
+            (
+                cc[acceptors[i]],
+                donorCellCentres[donors[i]],
+                cellInterpolationWeights_[acceptors[i]]
+            );
+        }
+        ++nStencilReused_;
+        return false;
+    }
+
+    stencilGlobal_.setSize(nCells);
+    cellStencil_.setSize(nCells);
+    cellInterpolationWeights_.setSize(nCells);
+    forAll(stencilGlobal_, celli)
+    {
+        stencilGlobal_[celli].clear();
+        cellStencil_[celli].clear();
+        cellInterpolationWeights_[celli].clear();
+    }
+    forAll(acceptors, i)
+    {
+        const label celli = acceptors[i];
+        stencilGlobal_[celli] = donorCellCells[donors[i]];
+        cellStencil_[celli] = stencilGlobal_[celli];
+        stencilWeights
+        (
+            cc[celli],
+            donorCellCentres[donors[i]],
+            cellInterpolationWeights_[celli]
+        );
+    }
+
+    // Compact the stencil (global -> compact numbering)
+    List<Map<label>> compactMap;
+    cellInterpolationMap_.reset
+    (
+        new mapDistribute(globalCells, cellStencil_, compactMap)
+    );
+    ++nStencilBuilt_;
+    return true;
+}
+
+
 void Foam::cellCellStencils::octreeInverseDistance::updateCached()
 {
     const labelIOList& zoneID = this->zoneID();
@@ -273,7 +799,11 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
     auto lap = [&](const char* part)
     {
         const stepTimers::clock::time_point now = stepTimers::clock::now();
-        timers_.add(word(stencilPart + part), stepTimers::seconds(lapStart, now));
+        timers_.add
+        (
+            word(stencilPart + part),
+            stepTimers::seconds(lapStart, now)
+        );
         lapStart = now;
     };
 
@@ -288,6 +818,7 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
         const labelList& pointMap = zoneParts_[zonei].pointMap();
         const scalar residual =
             zoneSearch_[zonei].fitTransform(points, pointMap);
+        zoneResidual_[zonei] = residual;
         const scalar size = mag(zoneSearch_[zonei].bb().span());
 
         if (residual > rigidTolerance_*size)
@@ -348,43 +879,34 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
     }
 
     labelList allPatchTypes(mesh_.nCells(), patchCellType::OTHER);
-    PtrList<PackedList<2>> patchParts(nZones);
     for (label zonei = 0; zonei < nZones; ++zonei)
     {
         const labelVector& d = patchDivisions[zonei];
-        patchParts.set(zonei, new PackedList<2>(d.x()*d.y()*d.z()));
-        markZoneBoundaries
-        (
-            zonei,
-            zoneID,
-            patchBb[zonei][0],
-            d,
-            patchParts[zonei],
-            allPatchTypes
-        );
+        const boundBox& bb = patchBb[zonei][0];
+
+        // Refill only a zone that moved (or whose map box changed)
+        const bool fillVoxels = !voxelsCurrent(zonei, bb, d);
+        if (fillVoxels)
+        {
+            clearVoxels(zonei, d);
+        }
+        markZoneBoundaries(zonei, zoneID, bb, d, fillVoxels, allPatchTypes);
     }
+
+    lap("Voxels");
 
     // 3. Holes and donors, pairs of zones in the stock order
     labelList allCellTypes(mesh_.nCells(), CALCULATED);
     labelListList allStencil(mesh_.nCells());
     labelList allDonorID(mesh_.nCells(), -1);
     const globalIndex globalCells(mesh_.nCells());
-    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
 
     for (label srcI = 0; srcI < nZones - 1; ++srcI)
     {
         for (label tgtI = srcI + 1; tgtI < nZones; ++tgtI)
         {
-            markPatchesAsHoles
-            (
-                pBufs, zoneParts_, patchBb, patchDivisions, patchParts,
-                srcI, tgtI, allCellTypes
-            );
-            markPatchesAsHoles
-            (
-                pBufs, zoneParts_, patchBb, patchDivisions, patchParts,
-                tgtI, srcI, allCellTypes
-            );
+            markHoles(srcI, tgtI, patchBb, patchDivisions, allCellTypes);
+            markHoles(tgtI, srcI, patchBb, patchDivisions, allCellTypes);
         }
     }
 
@@ -413,16 +935,27 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
 
     // 4. Cell types from the patch types and the donors, as the stock
     //    stencil: an overset-patch cell is interpolated if it has a donor,
-    //    else a hole; so is a cell that was a hole and is calculated now
+    //    else a hole (an orphan); so is a cell that was a hole and is
+    //    calculated now
+    bitSet isOversetPatchCell(mesh_.nCells());
+    forAll(allPatchTypes, celli)
+    {
+        if (allPatchTypes[celli] == patchCellType::OVERSET)
+        {
+            isOversetPatchCell.set(celli);
+        }
+    }
+
+    const labelList orphans
+    (
+        findOrphans(allCellTypes, cellTypes_, isOversetPatchCell, allStencil)
+    );
+
     forAll(allCellTypes, celli)
     {
         label& type = allCellTypes[celli];
 
-        const bool needsDonor =
-            (type != HOLE && allPatchTypes[celli] == patchCellType::OVERSET)
-         || (type == CALCULATED && cellTypes_[celli] == HOLE);
-
-        if (needsDonor)
+        if (needsDonor(type, cellTypes_[celli], isOversetPatchCell[celli]))
         {
             if (allStencil[celli].size())
             {
@@ -444,34 +977,32 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
 
     lap("Flood");
 
-    // 5. Donor-only stencil in compact form, then the inverse-distance
-    //    stencil around each donor (stock createStencil)
+    // 5. The inverse-distance stencil around each donor (the stock
+    //    createStencil's result, one pass, addressing kept if unchanged)
     cellTypes_.transfer(allCellTypes);
-    cellStencil_.setSize(mesh_.nCells());
-    cellInterpolationWeights_.setSize(mesh_.nCells());
 
     DynamicList<label> interpolated(mesh_.nCells()/10);
     forAll(cellTypes_, celli)
     {
         if (cellTypes_[celli] == INTERPOLATED)
         {
-            cellStencil_[celli].transfer(allStencil[celli]);
-            cellInterpolationWeights_[celli] = scalarList(1, 1.0);
+            if (allStencil[celli].size() != 1)
+            {
+                FatalErrorInFunction
+                    << "interpolated cell " << celli << " has "
+                    << allStencil[celli].size() << " donors instead of 1"
+                    << abort(FatalError);
+            }
             interpolated.append(celli);
-        }
-        else
-        {
-            cellStencil_[celli].clear();
-            cellInterpolationWeights_[celli].clear();
         }
     }
     interpolationCells_.transfer(interpolated);
+    donorGlobal_.setSize(interpolationCells_.size());
+    forAll(interpolationCells_, i)
+    {
+        donorGlobal_[i] = allStencil[interpolationCells_[i]][0];
+    }
 
-    List<Map<label>> compactMap;
-    cellInterpolationMap_.reset
-    (
-        new mapDistribute(globalCells, cellStencil_, compactMap)
-    );
     cellInterpolationWeight_.transfer(allWeight);
     dynamicOversetFvMesh::correctBoundaryConditions
     <
@@ -479,7 +1010,7 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
         oversetFvPatchField<scalar>
     >(cellInterpolationWeight_.boundaryFieldRef(), false);
 
-    createStencil(globalCells);
+    const bool rebuilt = createStencilSerial(globalCells);
 
     lap("Weights");
 
@@ -488,7 +1019,11 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
         const labelList nCells(count(3, cellTypes_));
         Info<< type() << " : calculated " << nCells[CALCULATED]
             << " interpolated " << nCells[INTERPOLATED]
-            << " hole " << nCells[HOLE] << nl << incrIndent;
+            << " hole " << nCells[HOLE]
+            << " orphan " << orphans.size()
+            << " stencil " << (rebuilt ? "rebuilt" : "reused")
+            << " (rebuilt " << nStencilBuilt_
+            << " reused " << nStencilReused_ << ")" << nl << incrIndent;
         forAll(zoneSearch_, zonei)
         {
             const zoneDonorSearch& s = zoneSearch_[zonei];
@@ -499,6 +1034,8 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
         }
         Info<< decrIndent << endl;
     }
+
+    reportOrphans(orphans);
 }
 
 
@@ -526,7 +1063,22 @@ Foam::cellCellStencils::octreeInverseDistance::octreeInverseDistance
     prevDonor_(),
     cacheNCells_(-1),
     timers_(stepTimers::New(mesh.time())),
-    parallelInfo_(false)
+    parallelInfo_(false),
+    patchParts_(),
+    patchBlocks_(),
+    patchFilled_(),
+    patchFilledBb_(),
+    patchFilledDivs_(),
+    patchFilledSmallVec_(),
+    patchFilledPoints_(),
+    patchMin_(),
+    patchMax_(),
+    cellRadius_(),
+    zoneResidual_(),
+    donorGlobal_(),
+    stencilGlobal_(),
+    nStencilBuilt_(0),
+    nStencilReused_(0)
 {
     readSettings();
 
