@@ -156,6 +156,14 @@ int main(int argc, char *argv[])
             model.writeJointsRow(os);
             Info<< "Time = " << runTime.timeName()
                 << "  q = " << model.state().q() << endl;
+
+            if (model.report())
+            {
+                for (label bodyID = 1; bodyID < model.nBodies(); ++bodyID)
+                {
+                    model.status(bodyID);
+                }
+            }
         }
     }
 

@@ -214,14 +214,6 @@ void Foam::RBD::eABAMotion::solve
     Pstream::scatter(tauPrescribed_);
 
     forwardDynamicsCorrection(motionState_);
-
-    if (report_)
-    {
-        for (label bodyID = 1; bodyID < nBodies(); ++bodyID)
-        {
-            status(bodyID);
-        }
-    }
 }
 
 
