@@ -1,0 +1,104 @@
+#!/usr/bin/python3
+"""
+Compare the multibody motion of two single-wing drone runs (eABAMeshMotion)
+that differ only in the overset stencil: the wing force of bodies.dat and
+the trajectory of joints.dat, rows matched by time (the readers of
+cases/singleWingDrone/scripts/checkRun.py and plotRun.py).
+
+Usage: compareMotion.py REF CASE [-forceTol 0.005] [-qTol 1e-4]
+                        [-columns q_0,qDot_0,q_1,qDot_1] [-body wing]
+
+  force: max over the rows and components of |F_CASE - F_REF| / max|F_REF|
+         (max of |F| over the rows of the reference run); PASS if <= forceTol,
+         each component reported.
+  trajectory: checkRun.py's relative difference |a - b| / max(|a|, |b|,
+         floor), floor = 1e-3 x max |value| of that column over REF's rows;
+         PASS if <= qTol for each of the columns.
+One PASS/FAIL line per check; exit status 1 on a failure.
+"""
+
+import argparse
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(
+    0,
+    os.path.join(
+        os.environ.get("FLAPFOAM_PROJECT_DIR", ""),
+        "cases", "singleWingDrone", "scripts"))
+import checkRun  # noqa: E402
+import plotRun  # noqa: E402
+
+
+def bodies(case, name="eABAMeshMotion"):
+    base = os.path.join(case, "postProcessing", name)
+    if not plotRun.startFolders(base):
+        sys.exit("compareMotion: no %s/<time>/bodies.dat" % base)
+    return plotRun.joinedTable(base, "bodies.dat", keepEarlierAtStart=False)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("ref")
+    ap.add_argument("case")
+    ap.add_argument("-forceTol", type=float, default=0.005)
+    ap.add_argument("-qTol", type=float, default=1e-4)
+    ap.add_argument("-columns", default="q_0,qDot_0,q_1,qDot_1")
+    ap.add_argument("-body", default="wing")
+    a = ap.parse_args()
+    name = os.path.basename(os.path.normpath(a.case))
+    refName = os.path.basename(os.path.normpath(a.ref))
+    status = 0
+
+    # Wing force
+    ca, A = bodies(a.ref)
+    cb, B = bodies(a.case)
+    ia, ib = checkRun.matchRows(A, B)
+    if len(ia) == 0 or len(ia) != len(A) or len(ib) != len(B):
+        status |= checkRun.report(
+            False, "%s force" % name,
+            "rows at different times (%d common, %d and %d rows)"
+            % (len(ia), len(A), len(B)))
+    else:
+        comps = ["%s:F%s" % (a.body, c) for c in "xyz"]
+        FA = A[:, [ca.index(c) for c in comps]]
+        FB = B[:, [cb.index(c) for c in comps]]
+        scale = float(np.linalg.norm(FA, axis=1).max()) + 1e-300
+        rel = np.abs(FA[ia] - FB[ib]).max(axis=0)/scale
+        status |= checkRun.report(
+            float(rel.max()) <= a.forceTol, "%s force" % name,
+            "vs %s, %d rows: max |dF|/max|F| %.2e (tol %g): %s "
+            "(max|F| %.4g N)"
+            % (refName, len(ia), rel.max(), a.forceTol,
+               ", ".join("F%s %.1e" % (c, r) for c, r in zip("xyz", rel)),
+               scale))
+
+    # Trajectory (checkRun.py's relative difference with a floor)
+    ca, A = checkRun.joints(a.ref)
+    cb, B = checkRun.joints(a.case)
+    ia, ib = checkRun.matchRows(A, B)
+    if len(ia) == 0 or len(ia) != len(A) or len(ib) != len(B):
+        status |= checkRun.report(
+            False, "%s trajectory" % name,
+            "rows at different times (%d common, %d and %d rows)"
+            % (len(ia), len(A), len(B)))
+    else:
+        worst = {}
+        for col in a.columns.split(","):
+            i, k = ca.index(col), cb.index(col)
+            floor = 1e-3*np.abs(A[:, i]).max() + 1e-300
+            worst[col] = float(
+                checkRun.relDiff(A[ia, i], B[ib, k], floor).max())
+        maxRel = max(worst.values())
+        status |= checkRun.report(
+            maxRel <= a.qTol, "%s trajectory" % name,
+            "vs %s, %d rows: max relative difference %.2e (tol %g): %s"
+            % (refName, len(ia), maxRel, a.qTol,
+               ", ".join("%s %.1e" % kv for kv in worst.items())))
+    return 1 if status else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
