@@ -348,10 +348,10 @@ void Foam::RBD::eABAMotion::writeJointsRow(Ostream& os) const
         os  << ' ' << s.q()[qi] << ' ' << s.qDot()[qi] << ' ' << s.qDdot()[qi];
     }
 
-    forAll(prescribed(), pi)
+    const scalarField power(prescribedPower(s));
+    forAll(power, pi)
     {
-        const scalar tau = prescribedTau()[pi];
-        os  << ' ' << tau << ' ' << tau*s.qDot()[prescribed()[pi]];
+        os  << ' ' << prescribedTau()[pi] << ' ' << power[pi];
     }
     os  << endl;
 }

@@ -234,11 +234,15 @@ void Foam::eABAMeshMotion::calcBodyLoads()
 }
 
 
-Foam::vector Foam::eABAMeshMotion::centreOfMass(const label bodyID) const
+Foam::vector Foam::eABAMeshMotion::centreOfMass
+(
+    const spatialTransform& X0,
+    const label bodyID
+) const
 {
     // X0 maps global to body coordinates: its inverse places the body's
     // centre of mass in the global frame
-    return model_.X0(bodyID).inv().transformPoint(model_.I(bodyID).c());
+    return X0.inv().transformPoint(model_.I(bodyID).c());
 }
 
 
@@ -264,20 +268,13 @@ void Foam::eABAMeshMotion::updatePoints()
     {
         // Translation of the followed body's centre of mass from the
         // reference configuration, selected components only
-        const vector c0
-        (
-            model_.X00(backgroundBodyID_).inv().transformPoint
-            (
-                model_.I(backgroundBodyID_).c()
-            )
-        );
-
+        const label b = backgroundBodyID_;
         const vector d
         (
             cmptMultiply
             (
                 backgroundMask_,
-                centreOfMass(backgroundBodyID_) - c0
+                centreOfMass(model_.X0(b), b) - centreOfMass(model_.X00(b), b)
             )
         );
 
@@ -336,7 +333,7 @@ void Foam::eABAMeshMotion::writeOutput()
     os  << model_.state().t();
     for (const bodyMesh& bm : bodyMeshes_)
     {
-        const vector c(centreOfMass(bm.bodyID));
+        const vector c(centreOfMass(model_.X0(bm.bodyID), bm.bodyID));
         const vector& F = fx_[bm.bodyID].l();
         const vector M(fx_[bm.bodyID].w() - (c ^ F));
 
