@@ -418,7 +418,14 @@ TEST(stepTimersFunctionObject, rowsHeaderClosureSummary)
 
         const double sum = dat(i, "rbd") + dat(i, "overset") + dat(i, "pimple");
         EXPECT_LE(sum, dat(i, "total"));
-        EXPECT_NEAR(sum, dat(i, "total"), 0.05*dat(i, "total") + 0.001);
+        // The loop's deliberate pre-update sleep (preUpdate) belongs to
+        // none of the three; on a busy machine it oversleeps
+        EXPECT_NEAR
+        (
+            sum,
+            dat(i, "total"),
+            0.05*dat(i, "total") + dat(i, "preUpdate") + 0.001
+        );
 
         // With preUpdate the step is covered but for the loop's own
         // overhead
