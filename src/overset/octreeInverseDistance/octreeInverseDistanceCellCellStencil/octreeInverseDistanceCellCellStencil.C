@@ -105,10 +105,13 @@ void Foam::cellCellStencils::octreeInverseDistance::readSettings()
 
 bool Foam::cellCellStencils::octreeInverseDistance::cacheStale() const
 {
-    return
+    return returnReduce
+    (
         zoneSearch_.empty()
      || cacheNCells_ != mesh_.nCells()
-     || mesh_.topoChanging();
+     || mesh_.topoChanging(),
+        orOp<bool>()
+    );
 }
 
 
@@ -126,6 +129,14 @@ void Foam::cellCellStencils::octreeInverseDistance::buildZone
     zoneSearch_.set(zonei, new zoneDonorSearch(subMesh, maxWalk_));
 
     prevDonor_[zonei] = labelList(mesh_.nCells(), -1);
+    prevRemote_[zonei] = List<labelPair>(mesh_.nCells(), labelPair(-1, -1));
+
+    // Every rank's box of its part of the zone, in the zone's frame
+    List<treeBoundBox>& procBb = procBb_[zonei];
+    procBb.setSize(Pstream::nProcs());
+    procBb[Pstream::myProcNo()] = zoneSearch_[zonei].bb();
+    Pstream::gatherList(procBb);
+    Pstream::scatterList(procBb);
 
     // Bounding radius of each zone cell about its centre
     const labelList& cellMap = zoneParts_[zonei].cellMap();
@@ -157,13 +168,19 @@ void Foam::cellCellStencils::octreeInverseDistance::buildCache
     const labelList& zoneID
 )
 {
-    const label nZones = zoneID.size() ? max(zoneID) + 1 : 0;
+    const label nZones = returnReduce
+    (
+        zoneID.size() ? max(zoneID) + 1 : 0,
+        maxOp<label>()
+    );
 
     zoneSearch_.clear();
     zoneParts_.clear();
     zoneSearch_.setSize(nZones);
     zoneParts_.setSize(nZones);
     prevDonor_.setSize(nZones);
+    prevRemote_.setSize(nZones);
+    procBb_.setSize(nZones);
     cellRadius_.setSize(nZones);
     zoneResidual_.setSize(nZones, Zero);
 
@@ -179,6 +196,15 @@ void Foam::cellCellStencils::octreeInverseDistance::buildCache
     patchFilledPoints_.setSize(nZones);
     patchMin_.setSize(nZones);
     patchMax_.setSize(nZones);
+    patchFilledNPatch_.setSize(nZones, 0);
+    patchVoxels_.setSize(nZones);
+    remoteParts_.clear();
+    remoteBlocks_.clear();
+    remoteParts_.setSize(nZones);
+    remoteBlocks_.setSize(nZones);
+    remoteMin_.setSize(nZones);
+    remoteMax_.setSize(nZones);
+    remoteSet_.setSize(nZones);
 
     for (label zonei = 0; zonei < nZones; ++zonei)
     {
@@ -258,6 +284,11 @@ void Foam::cellCellStencils::octreeInverseDistance::markZoneBoundaries
     // patches on top
     for (const bool oversetPass : {false, true})
     {
+        if (oversetPass && fillVoxels)
+        {
+            patchFilledNPatch_[zonei] = filled.size();
+        }
+
         for (const fvPatch& fvp : pbm)
         {
             const bool isOverset = isA<oversetFvPatch>(fvp);
@@ -462,15 +493,15 @@ void Foam::cellCellStencils::octreeInverseDistance::markHoles
     const label tgtI,
     const List<treeBoundBoxList>& patchBb,
     const List<labelVector>& patchDivisions,
+    const PackedList<2>& srcPatchTypes,
+    const PackedList<1>& blocks,
+    const labelVector& pMin,
+    const labelVector& pMax,
     labelList& allCellTypes
 ) const
 {
     const treeBoundBox& srcPatchBb = patchBb[srcI][0];
     const labelVector& nDivs = patchDivisions[srcI];
-    const labelVector& pMin = patchMin_[srcI];
-    const labelVector& pMax = patchMax_[srcI];
-    const PackedList<2>& srcPatchTypes = patchParts_[srcI];
-    const PackedList<1>& blocks = patchBlocks_[srcI];
     const labelVector nBlocks(blockDivisions(nDivs));
     const labelVector maxIndex(nDivs - labelVector::one);
 
@@ -637,25 +668,46 @@ void Foam::cellCellStencils::octreeInverseDistance::reportOrphans
     const labelList& orphans
 ) const
 {
-    if (orphans.size())
+    const label nOrphans = returnReduce(orphans.size(), sumOp<label>());
+
+    if (nOrphans)
     {
+        // A few locations from every rank
         const pointField& cc = mesh_.cellCentres();
         const labelList& zoneID = this->zoneID();
         const label nShow = min(orphans.size(), label(5));
 
-        Info<< type() << " : " << orphans.size() << " orphan cells (need a"
+        List<labelList> shownCells(Pstream::nProcs());
+        List<labelList> shownZones(Pstream::nProcs());
+        List<pointField> shownCentres(Pstream::nProcs());
+        const label proci = Pstream::myProcNo();
+        shownCells[proci] = SubList<label>(orphans, nShow);
+        shownZones[proci] = labelUIndList(zoneID, shownCells[proci]);
+        shownCentres[proci] = pointField(cc, shownCells[proci]);
+        Pstream::gatherList(shownCells);
+        Pstream::gatherList(shownZones);
+        Pstream::gatherList(shownCentres);
+
+        Info<< type() << " : " << nOrphans << " orphan cells (need a"
             << " donor, found none; now holes) at time "
-            << mesh_.time().timeName() << ", first " << nShow << ":" << nl;
-        for (label i = 0; i < nShow; ++i)
+            << mesh_.time().timeName() << "; at most 5 per rank:" << nl;
+        forAll(shownCells, proci)
         {
-            const label celli = orphans[i];
-            Info<< "    cell " << celli << " zone " << zoneID[celli]
-                << " at " << cc[celli] << nl;
+            forAll(shownCells[proci], i)
+            {
+                Info<< "    cell " << shownCells[proci][i];
+                if (Pstream::parRun())
+                {
+                    Info<< " of processor" << proci;
+                }
+                Info<< " zone " << shownZones[proci][i]
+                    << " at " << shownCentres[proci][i] << nl;
+            }
         }
         Info<< "    cellSet " << orphanSetName << endl;
     }
 
-    if (orphans.size() || mesh_.time().writeTime())
+    if (nOrphans || mesh_.time().writeTime())
     {
         cellSet set
         (
@@ -672,19 +724,35 @@ void Foam::cellCellStencils::octreeInverseDistance::reportOrphans
 }
 
 
-bool Foam::cellCellStencils::octreeInverseDistance::createStencilSerial
+bool Foam::cellCellStencils::octreeInverseDistance::createStencilOnePass
 (
     const globalIndex& globalCells
 )
 {
-    // Donors: local cells (serial)
     const label nCells = mesh_.nCells();
     const labelList& acceptors = interpolationCells_;
 
-    labelList donors(acceptors.size());
-    forAll(acceptors, i)
+    // The donors in compact numbering (local cells first, then the remote
+    // ones), and the map that brings a donor's data to its acceptors
+    labelList slots(donorGlobal_);
+    List<Map<label>> compactMap;
+    const mapDistribute donorMap(globalCells, slots, compactMap);
+
+    // The local cells that are donors, here or on another rank
+    bitSet isDonor(nCells);
+    for (const label slot : slots)
     {
-        donors[i] = globalCells.toLocal(donorGlobal_[i]);
+        if (slot < nCells)
+        {
+            isDonor.set(slot);
+        }
+    }
+    forAll(donorMap.subMap(), proci)
+    {
+        if (proci != Pstream::myProcNo())
+        {
+            isDonor.set(donorMap.subMap()[proci]);
+        }
     }
 
     // The donors and their valid face neighbours, as the stock createStencil
@@ -697,19 +765,22 @@ bool Foam::cellCellStencils::octreeInverseDistance::createStencilSerial
         }
     }
 
-    labelListList donorCellCells;
-    pointListList donorCellCentres;
+    labelListList donorCellCells(nCells);
+    pointListList donorCellCentres(nCells);
     globalCellCells
     (
         globalCells,
         mesh_,
         isValidDonor,
-        labelHashSet(donors).sortedToc(),
+        isDonor.toc(),
         donorCellCells,
         donorCellCentres
     );
+    donorMap.distribute(donorCellCells);
+    donorMap.distribute(donorCellCentres);
 
-    // Addressing unchanged?  Same interpolated cells with the same stencils
+    // Addressing unchanged (on every rank)?  Same interpolated cells with
+    // the same stencils
     bool same =
         cellInterpolationMap_.valid()
      && stencilGlobal_.size() == nCells
@@ -730,8 +801,9 @@ bool Foam::cellCellStencils::octreeInverseDistance::createStencilSerial
     }
     for (label i = 0; same && i < acceptors.size(); ++i)
     {
-        same = (stencilGlobal_[acceptors[i]] == donorCellCells[donors[i]]);
+        same = (stencilGlobal_[acceptors[i]] == donorCellCells[slots[i]]);
     }
+    reduce(same, andOp<bool>());
 
     // Weights from the acceptor's centre (stock stencilWeights)
     const pointField& cc = mesh_.cellCentres();
@@ -743,7 +815,7 @@ bool Foam::cellCellStencils::octreeInverseDistance::createStencilSerial
             stencilWeights
             (
                 cc[acceptors[i]],
-                donorCellCentres[donors[i]],
+                donorCellCentres[slots[i]],
                 cellInterpolationWeights_[acceptors[i]]
             );
         }
@@ -763,18 +835,18 @@ bool Foam::cellCellStencils::octreeInverseDistance::createStencilSerial
     forAll(acceptors, i)
     {
         const label celli = acceptors[i];
-        stencilGlobal_[celli] = donorCellCells[donors[i]];
+        stencilGlobal_[celli] = donorCellCells[slots[i]];
         cellStencil_[celli] = stencilGlobal_[celli];
         stencilWeights
         (
             cc[celli],
-            donorCellCentres[donors[i]],
+            donorCellCentres[slots[i]],
             cellInterpolationWeights_[celli]
         );
     }
 
     // Compact the stencil (global -> compact numbering)
-    List<Map<label>> compactMap;
+    compactMap.clear();
     cellInterpolationMap_.reset
     (
         new mapDistribute(globalCells, cellStencil_, compactMap)
@@ -807,11 +879,13 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
         lapStart = now;
     };
 
+    const bool parallel = Pstream::parRun();
     const label nZones = zoneSearch_.size();
     smallVec_ = mesh_.bounds().span()*tolerance_;
     const pointField& points = mesh_.points();
 
-    // 1. Rigid transform of each zone; rebuild a deforming zone
+    // 1. Rigid transform of each zone (the same on every rank); rebuild a
+    //    deforming zone; the whole zone's current box
     List<treeBoundBoxList> zoneBb(nZones, treeBoundBoxList(1));
     for (label zonei = 0; zonei < nZones; ++zonei)
     {
@@ -819,7 +893,7 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
         const scalar residual =
             zoneSearch_[zonei].fitTransform(points, pointMap);
         zoneResidual_[zonei] = residual;
-        const scalar size = mag(zoneSearch_[zonei].bb().span());
+        const scalar size = zoneSearch_[zonei].size();
 
         if (residual > rigidTolerance_*size)
         {
@@ -831,9 +905,10 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
             buildZone(zonei, zoneID);
         }
 
-        if (pointMap.size())
+        const boundBox bb(points, zoneParts_[zonei].pointMap(), true);
+        if (!bb.empty())
         {
-            zoneBb[zonei][0] = treeBoundBox(boundBox(points, pointMap, false));
+            zoneBb[zonei][0] = treeBoundBox(bb);
             zoneBb[zonei][0].inflate(1e-6);
         }
         else
@@ -885,12 +960,22 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
         const boundBox& bb = patchBb[zonei][0];
 
         // Refill only a zone that moved (or whose map box changed)
-        const bool fillVoxels = !voxelsCurrent(zonei, bb, d);
+        const bool fillVoxels =
+            returnReduce(!voxelsCurrent(zonei, bb, d), orOp<bool>());
         if (fillVoxels)
         {
             clearVoxels(zonei, d);
         }
         markZoneBoundaries(zonei, zoneID, bb, d, fillVoxels, allPatchTypes);
+        if (fillVoxels && parallel)
+        {
+            collectPatchVoxels(zonei, d);
+        }
+    }
+    nVoxelsSent_ = 0;
+    if (parallel)
+    {
+        exchangePatchVoxels(patchBb, patchDivisions);
     }
 
     lap("Voxels");
@@ -905,8 +990,26 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
     {
         for (label tgtI = srcI + 1; tgtI < nZones; ++tgtI)
         {
-            markHoles(srcI, tgtI, patchBb, patchDivisions, allCellTypes);
-            markHoles(tgtI, srcI, patchBb, patchDivisions, allCellTypes);
+            // This rank's patch voxels, then the other ranks'
+            for (const label s : {srcI, tgtI})
+            {
+                const label t = (s == srcI ? tgtI : srcI);
+                markHoles
+                (
+                    s, t, patchBb, patchDivisions,
+                    patchParts_[s], patchBlocks_[s], patchMin_[s],
+                    patchMax_[s], allCellTypes
+                );
+                if (remoteParts_.set(s))
+                {
+                    markHoles
+                    (
+                        s, t, patchBb, patchDivisions,
+                        remoteParts_[s], remoteBlocks_[s], remoteMin_[s],
+                        remoteMax_[s], allCellTypes
+                    );
+                }
+            }
         }
     }
 
@@ -931,12 +1034,6 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
         }
     }
 
-    lap("Donors");
-
-    // 4. Cell types from the patch types and the donors, as the stock
-    //    stencil: an overset-patch cell is interpolated if it has a donor,
-    //    else a hole (an orphan); so is a cell that was a hole and is
-    //    calculated now
     bitSet isOversetPatchCell(mesh_.nCells());
     forAll(allPatchTypes, celli)
     {
@@ -946,6 +1043,29 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
         }
     }
 
+    // Parallel: donors on other ranks for the cells whose donors matter
+    const labelList holeTypes(parallel ? allCellTypes : labelList());
+    bitSet queried(mesh_.nCells());
+    nQueriesSent_ = 0;
+    if (parallel)
+    {
+        findRemoteDonors
+        (
+            donorCandidates(allCellTypes, isOversetPatchCell),
+            globalCells,
+            allCellTypes,
+            allStencil,
+            allDonorID,
+            queried
+        );
+    }
+
+    lap("Donors");
+
+    // 4. Cell types from the patch types and the donors, as the stock
+    //    stencil: an overset-patch cell is interpolated if it has a donor,
+    //    else a hole (an orphan); so is a cell that was a hole and is
+    //    calculated now
     const labelList orphans
     (
         findOrphans(allCellTypes, cellTypes_, isOversetPatchCell, allStencil)
@@ -972,8 +1092,19 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
     // Unreachable regions become holes; fringe layers around the holes
     findHoles(globalCells, mesh_, zoneID, allStencil, allCellTypes);
 
+    const labelList floodTypes(allCellTypes);
     scalarField allWeight(mesh_.nCells(), Zero);
-    walkFront(layerRelax_, allStencil, allCellTypes, allWeight);
+    walkFrontResolved
+    (
+        globalCells,
+        holeTypes,
+        floodTypes,
+        allCellTypes,
+        allStencil,
+        allDonorID,
+        allWeight,
+        queried
+    );
 
     lap("Flood");
 
@@ -1010,7 +1141,7 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
         oversetFvPatchField<scalar>
     >(cellInterpolationWeight_.boundaryFieldRef(), false);
 
-    const bool rebuilt = createStencilSerial(globalCells);
+    const bool rebuilt = createStencilOnePass(globalCells);
 
     lap("Weights");
 
@@ -1020,7 +1151,7 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
         Info<< type() << " : calculated " << nCells[CALCULATED]
             << " interpolated " << nCells[INTERPOLATED]
             << " hole " << nCells[HOLE]
-            << " orphan " << orphans.size()
+            << " orphan " << returnReduce(orphans.size(), sumOp<label>())
             << " stencil " << (rebuilt ? "rebuilt" : "reused")
             << " (rebuilt " << nStencilBuilt_
             << " reused " << nStencilReused_ << ")" << nl << incrIndent;
@@ -1028,9 +1159,17 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
         {
             const zoneDonorSearch& s = zoneSearch_[zonei];
             Info<< indent << "donor zone " << zonei
-                << " : walk " << s.nWalk()
-                << " octree " << s.nOctree()
-                << " outside " << s.nOutside() << nl;
+                << " : walk " << returnReduce(s.nWalk(), sumOp<label>())
+                << " octree " << returnReduce(s.nOctree(), sumOp<label>())
+                << " outside " << returnReduce(s.nOutside(), sumOp<label>())
+                << nl;
+        }
+        if (parallel)
+        {
+            Info<< indent << "sent: patch voxels "
+                << returnReduce(nVoxelsSent_, sumOp<label>())
+                << " donor queries "
+                << returnReduce(nQueriesSent_, sumOp<label>()) << nl;
         }
         Info<< decrIndent << endl;
     }
@@ -1063,7 +1202,8 @@ Foam::cellCellStencils::octreeInverseDistance::octreeInverseDistance
     prevDonor_(),
     cacheNCells_(-1),
     timers_(stepTimers::New(mesh.time())),
-    parallelInfo_(false),
+    procBb_(),
+    prevRemote_(),
     patchParts_(),
     patchBlocks_(),
     patchFilled_(),
@@ -1073,6 +1213,15 @@ Foam::cellCellStencils::octreeInverseDistance::octreeInverseDistance
     patchFilledPoints_(),
     patchMin_(),
     patchMax_(),
+    patchFilledNPatch_(),
+    patchVoxels_(),
+    remoteParts_(),
+    remoteBlocks_(),
+    remoteMin_(),
+    remoteMax_(),
+    remoteSet_(),
+    nVoxelsSent_(0),
+    nQueriesSent_(0),
     cellRadius_(),
     zoneResidual_(),
     donorGlobal_(),
@@ -1097,18 +1246,6 @@ bool Foam::cellCellStencils::octreeInverseDistance::update()
 
     if (search_ == searchType::stock)
     {
-        return inverseDistance::update();
-    }
-
-    if (Pstream::parRun())
-    {
-        if (!parallelInfo_)
-        {
-            Info<< type() << " : parallel run: the cached search is serial"
-                << " only for now; using the stock inverseDistance update"
-                << endl;
-            parallelInfo_ = true;
-        }
         return inverseDistance::update();
     }
 

@@ -62,6 +62,8 @@ Foam::zoneDonorSearch::zoneDonorSearch
     mesh_(zoneMesh),
     maxWalk_(maxWalk),
     bb_(treeBoundBox::invertedBox),
+    nGlobal_(0),
+    size_(0),
     c0_(Zero),
     R_(tensor::I),
     c_(Zero),
@@ -71,13 +73,19 @@ Foam::zoneDonorSearch::zoneDonorSearch
 {
     const pointField& pts = mesh_.points();
 
+    // Whole-zone centroid and size: sums over the ranks
+    nGlobal_ = returnReduce(pts.size(), sumOp<label>());
+    if (nGlobal_)
+    {
+        c0_ = returnReduce(sum(pts), sumOp<vector>())/scalar(nGlobal_);
+        size_ = mag(boundBox(pts, true).span());
+    }
+    c_ = c0_;
+
     if (mesh_.nCells() && pts.size())
     {
         bb_ = treeBoundBox(pts);
         bb_.inflate(1e-6);
-
-        c0_ = sum(pts)/scalar(pts.size());
-        c_ = c0_;
 
         // Build the cached search structures now, in the reference frame
         (void)mesh_.tetBasePtIs();
@@ -112,13 +120,13 @@ Foam::scalar Foam::zoneDonorSearch::fitTransform
             << points.size() << " current points" << abort(FatalError);
     }
 
-    if (pts0.empty())
+    if (nGlobal_ == 0)
     {
         R_ = tensor::I;
         return 0;
     }
 
-    // Static zone: identity, exactly
+    // Static zone (on every rank): identity, exactly
     bool unmoved = true;
     forAll(pts0, i)
     {
@@ -128,7 +136,7 @@ Foam::scalar Foam::zoneDonorSearch::fitTransform
             break;
         }
     }
-    if (unmoved)
+    if (returnReduce(unmoved, andOp<bool>()))
     {
         R_ = tensor::I;
         c_ = c0_;
@@ -136,19 +144,21 @@ Foam::scalar Foam::zoneDonorSearch::fitTransform
     }
 
     // Kabsch: cross-covariance H = sum (x0 - c0)(x - c)^T = U S V^T,
-    // R = V diag(1, 1, det(V U^T)) U^T
+    // R = V diag(1, 1, det(V U^T)) U^T; sums over the ranks
     point c(Zero);
     forAll(points, i)
     {
         c += points[i];
     }
-    c /= scalar(points.size());
+    reduce(c, sumOp<vector>());
+    c /= scalar(nGlobal_);
 
     tensor H(Zero);
     forAll(pts0, i)
     {
         H += (pts0[i] - c0_)*(points[i] - c);
     }
+    reduce(H, sumOp<tensor>());
 
     scalarRectangularMatrix A(3, 3);
     for (direction i = 0; i < 3; ++i)
@@ -183,7 +193,7 @@ Foam::scalar Foam::zoneDonorSearch::fitTransform
         maxResidual = max(maxResidual, mag(toCurrent(pts0[i]) - points[i]));
     }
 
-    return maxResidual;
+    return returnReduce(maxResidual, maxOp<scalar>());
 }
 
 

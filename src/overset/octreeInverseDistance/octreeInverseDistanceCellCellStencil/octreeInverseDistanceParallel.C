@@ -1,0 +1,526 @@
+/*---------------------------------------------------------------------------*\
+  flapFoam: free-flight simulation of flapping-wing drones on OpenFOAM v1912
+-------------------------------------------------------------------------------
+Description
+    octreeInverseDistance: what crosses the ranks.  Patch voxels go only to
+    the ranks whose parts of other zones they may cut, donor queries only
+    for the cells whose donors matter, through a mapDistribute built from
+    the cached per-rank boxes in the zones' frames.
+
+\*---------------------------------------------------------------------------*/
+
+#include "octreeInverseDistanceCellCellStencil.H"
+#include "globalIndex.H"
+#include "mapDistribute.H"
+#include "syncTools.H"
+#include "PstreamBuffers.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::treeBoundBox Foam::cellCellStencils::octreeInverseDistance::currentBox
+(
+    const label zonei,
+    const label proci
+) const
+{
+    const treeBoundBox& bb0 = procBb_[zonei][proci];
+    if (bb0.empty())
+    {
+        return bb0;
+    }
+
+    const zoneDonorSearch& search = zoneSearch_[zonei];
+    const tmp<pointField> tcorners(bb0.points());
+    treeBoundBox bb(treeBoundBox::invertedBox);
+    for (const point& p0 : tcorners())
+    {
+        bb.add(search.toCurrent(p0));
+    }
+    return bb;
+}
+
+
+void Foam::cellCellStencils::octreeInverseDistance::collectPatchVoxels
+(
+    const label zonei,
+    const labelVector& nDivs
+)
+{
+    const PackedList<2>& types = patchParts_[zonei];
+    const boundBox& bb = patchFilledBb_[zonei];
+    const labelVector maxIndex(nDivs - labelVector::one);
+
+    // The PATCH voxels lie in the voxel ranges of the proper-patch face
+    // boxes (the overset pass may have overwritten some)
+    DynamicList<label> voxels;
+    const DynamicList<boundBox>& filled = patchFilled_[zonei];
+    for (label i = 0; i < patchFilledNPatch_[zonei]; ++i)
+    {
+        const labelVector lo
+        (
+            max(labelVector::zero, index3(bb, nDivs, filled[i].min()))
+        );
+        const labelVector hi
+        (
+            min(maxIndex, index3(bb, nDivs, filled[i].max()))
+        );
+
+        for (label vi = lo.x(); vi <= hi.x(); ++vi)
+        {
+            for (label vj = lo.y(); vj <= hi.y(); ++vj)
+            {
+                for (label vk = lo.z(); vk <= hi.z(); ++vk)
+                {
+                    const label v = index(nDivs, labelVector(vi, vj, vk));
+                    if (types.get(v) == patchCellType::PATCH)
+                    {
+                        voxels.append(v);
+                    }
+                }
+            }
+        }
+    }
+
+    labelList& result = patchVoxels_[zonei];
+    result.transfer(voxels);
+    Foam::sort(result);
+    result.setSize(std::unique(result.begin(), result.end()) - result.begin());
+}
+
+
+void Foam::cellCellStencils::octreeInverseDistance::exchangePatchVoxels
+(
+    const List<treeBoundBoxList>& patchBb,
+    const List<labelVector>& patchDivisions
+)
+{
+    const label nZones = zoneSearch_.size();
+    const label myProci = Pstream::myProcNo();
+
+    // Clear last step's remote voxels
+    for (label zonei = 0; zonei < nZones; ++zonei)
+    {
+        if (remoteParts_.set(zonei))
+        {
+            for (const label v : remoteSet_[zonei])
+            {
+                remoteParts_[zonei].set(v, patchCellType::OTHER);
+            }
+            remoteBlocks_[zonei] = 0u;
+        }
+        remoteSet_[zonei].clear();
+        remoteMin_[zonei] = labelVector::uniform(labelMax);
+        remoteMax_[zonei] = labelVector::uniform(-1);
+    }
+
+    // Send each rank the PATCH voxels of zone z that meet its current box
+    // of another zone (grown by the tolerance the hole test adds)
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+
+    for (label proci = 0; proci < Pstream::nProcs(); ++proci)
+    {
+        if (proci == myProci)
+        {
+            continue;
+        }
+
+        labelListList send(nZones);
+        bool any = false;
+
+        for (label zonei = 0; zonei < nZones; ++zonei)
+        {
+            const labelList& voxels = patchVoxels_[zonei];
+            if (voxels.empty())
+            {
+                continue;
+            }
+
+            treeBoundBoxList tgtBbs;
+            for (label tgti = 0; tgti < nZones; ++tgti)
+            {
+                if (tgti != zonei)
+                {
+                    treeBoundBox bb(currentBox(tgti, proci));
+                    if (!bb.empty())
+                    {
+                        bb.min() -= smallVec_;
+                        bb.max() += smallVec_;
+                        tgtBbs.append(bb);
+                    }
+                }
+            }
+            if (tgtBbs.empty())
+            {
+                continue;
+            }
+
+            const boundBox& bb = patchBb[zonei][0];
+            const labelVector& nDivs = patchDivisions[zonei];
+            const vector span(bb.span());
+            const vector h
+            (
+                span.x()/nDivs.x(), span.y()/nDivs.y(), span.z()/nDivs.z()
+            );
+
+            DynamicList<label> sendVoxels;
+            for (const label v : voxels)
+            {
+                const labelVector ijk(index3(nDivs, v));
+                const point lo
+                (
+                    bb.min()
+                  + vector(ijk.x()*h.x(), ijk.y()*h.y(), ijk.z()*h.z())
+                );
+                boundBox voxelBb(lo, lo + h);
+                // Round-off of index3 at the voxel faces
+                voxelBb.inflate(1e-6);
+
+                for (const treeBoundBox& tgtBb : tgtBbs)
+                {
+                    if (tgtBb.overlaps(voxelBb))
+                    {
+                        sendVoxels.append(v);
+                        break;
+                    }
+                }
+            }
+            if (sendVoxels.size())
+            {
+                nVoxelsSent_ += sendVoxels.size();
+                send[zonei].transfer(sendVoxels);
+                any = true;
+            }
+        }
+
+        if (any)
+        {
+            UOPstream os(proci, pBufs);
+            os << send;
+        }
+    }
+
+    labelList recvSizes;
+    pBufs.finishedSends(recvSizes);
+
+    // Merge the received voxels: the hole test asks whether a cell meets a
+    // PATCH voxel of any rank, so one map per zone holds them all (the
+    // ranks share the zone's voxel grid)
+    for (label proci = 0; proci < Pstream::nProcs(); ++proci)
+    {
+        if (proci == myProci || !recvSizes[proci])
+        {
+            continue;
+        }
+
+        UIPstream is(proci, pBufs);
+        const labelListList recv(is);
+
+        forAll(recv, zonei)
+        {
+            if (recv[zonei].empty())
+            {
+                continue;
+            }
+
+            const labelVector& nDivs = patchDivisions[zonei];
+            const label nVoxels = nDivs.x()*nDivs.y()*nDivs.z();
+            const labelVector nBlocks(blockDivisions(nDivs));
+
+            if
+            (
+                !remoteParts_.set(zonei)
+             || remoteParts_[zonei].size() != nVoxels
+            )
+            {
+                remoteParts_.set
+                (
+                    zonei,
+                    new PackedList<2>(nVoxels, patchCellType::OTHER)
+                );
+                remoteBlocks_.set
+                (
+                    zonei,
+                    new PackedList<1>
+                    (
+                        nBlocks.x()*nBlocks.y()*nBlocks.z(),
+                        0u
+                    )
+                );
+            }
+
+            PackedList<2>& types = remoteParts_[zonei];
+            PackedList<1>& blocks = remoteBlocks_[zonei];
+            for (const label v : recv[zonei])
+            {
+                const labelVector ijk(index3(nDivs, v));
+                types.set(v, patchCellType::PATCH);
+                blocks.set(index(nBlocks, ijk/voxelBlock));
+                remoteSet_[zonei].append(v);
+                remoteMin_[zonei] = min(remoteMin_[zonei], ijk);
+                remoteMax_[zonei] = max(remoteMax_[zonei], ijk);
+            }
+        }
+    }
+}
+
+
+Foam::labelList
+Foam::cellCellStencils::octreeInverseDistance::donorCandidates
+(
+    const labelList& allCellTypes,
+    const bitSet& isOversetPatchCell
+) const
+{
+    const labelList& own = mesh_.faceOwner();
+    const labelList& nei = mesh_.faceNeighbour();
+    const label nInternal = mesh_.nInternalFaces();
+
+    bitSet candidate(mesh_.nCells());
+
+    forAll(allCellTypes, celli)
+    {
+        const label prevType =
+            celli < cellTypes_.size() ? cellTypes_[celli] : CALCULATED;
+        if
+        (
+            needsDonor
+            (
+                allCellTypes[celli], prevType, isOversetPatchCell[celli]
+            )
+        )
+        {
+            candidate.set(celli);
+        }
+    }
+
+    // Next to a hole, across internal and coupled faces
+    for (label facei = 0; facei < nInternal; ++facei)
+    {
+        const bool ownHole = (allCellTypes[own[facei]] == HOLE);
+        const bool neiHole = (allCellTypes[nei[facei]] == HOLE);
+        if (ownHole && !neiHole)
+        {
+            candidate.set(nei[facei]);
+        }
+        else if (neiHole && !ownHole)
+        {
+            candidate.set(own[facei]);
+        }
+    }
+
+    labelList nbrTypes;
+    syncTools::swapBoundaryCellList(mesh_, allCellTypes, nbrTypes);
+    for (label facei = nInternal; facei < mesh_.nFaces(); ++facei)
+    {
+        const label celli = own[facei];
+        if
+        (
+            nbrTypes[facei - nInternal] == HOLE
+         && allCellTypes[celli] != HOLE
+        )
+        {
+            candidate.set(celli);
+        }
+    }
+
+    return candidate.toc();
+}
+
+
+void Foam::cellCellStencils::octreeInverseDistance::findRemoteDonors
+(
+    const labelUList& cells,
+    const globalIndex& globalCells,
+    const labelList& allCellTypes,
+    labelListList& allStencil,
+    labelList& allDonor,
+    bitSet& queried
+)
+{
+    const label nZones = zoneSearch_.size();
+    const label nProcs = Pstream::nProcs();
+    const label myProci = Pstream::myProcNo();
+    const labelList& zoneID = this->zoneID();
+    const pointField& cc = mesh_.cellCentres();
+
+    // Queries: (cell, donor zone, rank) with the point in the donor zone's
+    // frame (the same transform on every rank) and the walk's seed there
+    DynamicList<label> qCell;
+    DynamicList<label> qZone;
+    DynamicList<label> qProc;
+    DynamicList<point> qPoint;
+    DynamicList<label> qSeed;
+    List<DynamicList<label>> sendQueries(nProcs);
+
+    for (const label celli : cells)
+    {
+        queried.set(celli);
+        const label tgti = zoneID[celli];
+
+        for (label srci = 0; srci < nZones; ++srci)
+        {
+            // Only a donor zone better than the one found can change it
+            if
+            (
+                srci == tgti
+             || (
+                    allDonor[celli] != -1
+                 && !betterDonor(tgti, allDonor[celli], srci)
+                )
+            )
+            {
+                continue;
+            }
+
+            const point p0(zoneSearch_[srci].toReference(cc[celli]));
+            const labelPair& prev = prevRemote_[srci][celli];
+
+            for (label proci = 0; proci < nProcs; ++proci)
+            {
+                if (proci != myProci && procBb_[srci][proci].contains(p0))
+                {
+                    sendQueries[proci].append(qCell.size());
+                    qCell.append(celli);
+                    qZone.append(srci);
+                    qProc.append(proci);
+                    qPoint.append(p0);
+                    qSeed.append(prev.first() == proci ? prev.second() : -1);
+                }
+            }
+        }
+    }
+
+    const label nQueries = qCell.size();
+    nQueriesSent_ += nQueries;
+
+    // The map: send the queries, answers come back by reverseDistribute
+    labelListList subMap(nProcs);
+    forAll(sendQueries, proci)
+    {
+        subMap[proci].transfer(sendQueries[proci]);
+    }
+    labelList recvSizes;
+    Pstream::exchangeSizes(subMap, recvSizes);
+
+    labelListList constructMap(nProcs);
+    label constructSize = 0;
+    forAll(constructMap, proci)
+    {
+        constructMap[proci] = identity(recvSizes[proci], constructSize);
+        constructSize += recvSizes[proci];
+    }
+    const mapDistribute map
+    (
+        constructSize,
+        std::move(subMap),
+        std::move(constructMap)
+    );
+
+    pointField points(std::move(qPoint));
+    labelList zones(qZone);
+    labelList seeds(std::move(qSeed));
+    map.distribute(points);
+    map.distribute(zones);
+    map.distribute(seeds);
+
+    // Answer the other ranks' queries: the local cell of the donor zone
+    // holding the point (the next seed), and the donor if not a hole
+    labelList donors(constructSize, -1);
+    labelList found(constructSize, -1);
+    forAll(points, i)
+    {
+        const label srci = zones[i];
+        const label subCelli =
+            zoneSearch_[srci].findCell(points[i], seeds[i]);
+        if (subCelli != -1)
+        {
+            found[i] = subCelli;
+            const label celli = zoneParts_[srci].cellMap()[subCelli];
+            if (allCellTypes[celli] != HOLE)
+            {
+                donors[i] = globalCells.toGlobal(celli);
+            }
+        }
+    }
+    map.reverseDistribute(nQueries, donors);
+    map.reverseDistribute(nQueries, found);
+
+    // Keep the best donor zone, the lowest rank within a zone (as stock)
+    for (label i = 0; i < nQueries; ++i)
+    {
+        const label celli = qCell[i];
+        const label srci = qZone[i];
+
+        if (found[i] != -1)
+        {
+            prevRemote_[srci][celli] = labelPair(qProc[i], found[i]);
+        }
+        if
+        (
+            donors[i] != -1
+         && betterDonor(zoneID[celli], allDonor[celli], srci)
+        )
+        {
+            allStencil[celli].setSize(1);
+            allStencil[celli][0] = donors[i];
+            allDonor[celli] = srci;
+        }
+    }
+}
+
+
+void Foam::cellCellStencils::octreeInverseDistance::walkFrontResolved
+(
+    const globalIndex& globalCells,
+    const labelList& holeTypes,
+    const labelList& floodTypes,
+    labelList& allCellTypes,
+    labelListList& allStencil,
+    labelList& allDonor,
+    scalarField& allWeight,
+    bitSet& queried
+)
+{
+    while (true)
+    {
+        walkFront(layerRelax_, allStencil, allCellTypes, allWeight);
+
+        if (!Pstream::parRun())
+        {
+            return;
+        }
+
+        // Cells whose type the walk set (from their stencil or its
+        // absence) that were not asked for remote donors
+        DynamicList<label> unresolved;
+        forAll(allCellTypes, celli)
+        {
+            if (allCellTypes[celli] != floodTypes[celli] && !queried[celli])
+            {
+                unresolved.append(celli);
+            }
+        }
+
+        if (returnReduce(unresolved.empty(), andOp<bool>()))
+        {
+            return;
+        }
+
+        findRemoteDonors
+        (
+            unresolved,
+            globalCells,
+            holeTypes,
+            allStencil,
+            allDonor,
+            queried
+        );
+
+        // Again from the flood-filled types
+        allCellTypes = floodTypes;
+        allWeight = Zero;
+    }
+}
+
+
+// ************************************************************************* //
