@@ -3,12 +3,15 @@
 
     bench/overset/summarise.py -dir DIR [-startup K] [-o PREFIX] RUN [RUN ...]
 
-Each RUN is DIR/<level>-np<N>-<stencil>, a case run by
+Each RUN is DIR/<level>-np<N>-<stencil>[-r<round>], a case run by
 cases/singleWingDrone/Allrun, with DIR/<RUN>.memory from peakMemory.py.
-Writes PREFIX.md (markdown table: median per step after K start-up steps of
-rbd, overset, pimple, total and the overset parts; overset share of total;
-peak memory; the ratios to the inverseDistance run of the same level and
-ranks) and PREFIX.png (stacked bars of the medians).
+Writes PREFIX.md (markdown table, one row per level, ranks and stencil:
+median per step after K start-up steps of rbd, overset, pimple, total and
+the overset parts, then the median over the rounds; overset share of total;
+peak memory (median over the rounds); the speed-ups of the stencil update
+with the mesh motion (oversetMovePoints) over inverseDistance and
+trackingInverseDistance of the same level and ranks, and the memory ratio
+to inverseDistance) and PREFIX.png (stacked bars of the medians).
 """
 
 import argparse
@@ -39,17 +42,38 @@ def main():
     parser.add_argument("runs", nargs="+")
     args = parser.parse_args()
 
-    rows = []
+    # Per configuration, the per-run medians of every round
+    groups = {}
     for run in args.runs:
-        level, np_, stencil = run.split("-", 2)
+        parts = run.split("-")
+        level, np_, stencil = parts[0], parts[1], parts[2]
         med, n = median_columns(os.path.join(args.dir, run), args.startup)
         with open(os.path.join(args.dir, run + ".memory")) as f:
             mem = float(f.read().split()[0])
-        rows.append(dict(run=run, level=level, np=int(np_[2:]),
-                         stencil=stencil, med=med, n=n, mem=mem))
+        g = groups.setdefault((level, int(np_[2:]), stencil), [])
+        g.append(dict(med=med, n=n, mem=mem))
+
+    rows = []
+    for (level, np_, stencil), g in groups.items():
+        columns = set.intersection(*(set(r["med"]) for r in g))
+        med = {c: float(np.median([r["med"][c] for r in g])) for c in columns}
+        spread = [r["med"]["overset"] for r in g]
+        rows.append(dict(level=level, np=np_, stencil=stencil, med=med,
+                         n=g[0]["n"], rounds=len(g),
+                         mem=float(np.median([r["mem"] for r in g])),
+                         spread=(min(spread), max(spread))))
 
     base = {(r["level"], r["np"]): r for r in rows
             if r["stencil"] == "inverseDistance"}
+    tracking = {(r["level"], r["np"]): r for r in rows
+                if r["stencil"] == "trackingInverseDistance"}
+
+    def speedup(ref, r):
+        """Stencil update with the motion: ref's time over r's"""
+        if not ref:
+            return "-"
+        return "%.1f" % (ref["med"]["oversetMovePoints"]
+                         / r["med"]["oversetMovePoints"])
 
     lines = [
         "# Overset stencils on the single-wing drone: time per step",
@@ -61,27 +85,35 @@ def main():
         "field interpolation after the motion; pimple includes the overset "
         "interpolation inside the PIMPLE loop.  Peak memory: the solver "
         "processes' peak resident memory, summed over the ranks.  Ratios "
-        "are to inverseDistance at the same level and ranks."
+        "are to the runs at the same level and ranks.  Speed-up: the "
+        "stencil update with the mesh motion (`oversetMovePoints`: the "
+        "stock stencils have no timer of their own inside it) of "
+        "inverseDistance (ID) or trackingInverseDistance (tracking) over "
+        "this run's.  With several rounds: medians over the rounds, and "
+        "the overset range over the rounds."
         % args.startup,
         "",
-        "| level | ranks | stencil | steps | rbd [s] | overset [s] | "
-        "stencil+motion [s] | pimple [s] | total [s] | overset share | "
-        "peak memory [MiB] | overset vs inverseDistance | memory vs "
-        "inverseDistance |",
-        "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|",
+        "| level | ranks | stencil | steps x rounds | rbd [s] | "
+        "overset [s] (range) | stencil+motion [s] | pimple [s] | total [s] "
+        "| overset share | peak memory [MiB] | speed-up vs ID | speed-up vs "
+        "tracking | memory vs ID |",
+        "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+        "---:|",
     ]
     for r in rows:
         m = r["med"]
-        b = base.get((r["level"], r["np"]))
-        ratio = "%.2f" % (m["overset"]/b["med"]["overset"]) if b else "-"
+        key = (r["level"], r["np"])
+        b = base.get(key)
         mratio = "%.2f" % (r["mem"]/b["mem"]) if b else "-"
         lines.append(
-            "| %s | %d | %s | %d | %.4f | %.3f | %.3f | %.3f | %.3f | "
-            "%.0f %% | %.0f | %s | %s |" % (
-                r["level"], r["np"], r["stencil"], r["n"], m["rbd"],
-                m["overset"], m.get("oversetMovePoints", float("nan")),
+            "| %s | %d | %s | %d x %d | %.4f | %.3f (%.3f-%.3f) | %.3f | "
+            "%.3f | %.3f | %.0f %% | %.0f | %s | %s | %s |" % (
+                r["level"], r["np"], r["stencil"], r["n"], r["rounds"],
+                m["rbd"], m["overset"], r["spread"][0], r["spread"][1],
+                m.get("oversetMovePoints", float("nan")),
                 m["pimple"], m["total"], 100*m["overset"]/m["total"],
-                r["mem"], ratio, mratio))
+                r["mem"], speedup(b, r), speedup(tracking.get(key), r),
+                mratio))
     lines += [
         "",
         "Machine: %s, %d CPUs, load average %s; %s." % (

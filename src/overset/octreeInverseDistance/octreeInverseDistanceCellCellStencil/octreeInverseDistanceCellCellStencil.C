@@ -51,7 +51,17 @@ Foam::cellCellStencils::octreeInverseDistance::orphanSetName
 
 void Foam::cellCellStencils::octreeInverseDistance::readSettings()
 {
-    search_ = searchTypeNames.getOrDefault("search", dict_, searchType::cached);
+    const word searchName
+    (
+        dict_.getOrDefault<word>("search", searchTypeNames[searchType::cached])
+    );
+    if (!searchTypeNames.found(searchName))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "search " << searchName << " unknown: must be one of "
+            << searchTypeNames.sortedToc() << exit(FatalIOError);
+    }
+    search_ = searchTypeNames[searchName];
 
     maxWalk_ = dict_.getOrDefault<label>("maxWalk", 16);
     if (maxWalk_ < 0)
