@@ -13,6 +13,9 @@
 #include "Time.H"
 #include "cellSet.H"
 
+#include <cstdio>
+#include <string>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 namespace Foam
@@ -34,6 +37,16 @@ Foam::cellCellStencils::octreeInverseDistance::searchTypeNames
     { searchType::stock, "stock" },
 });
 
+const Foam::Enum
+<
+    Foam::cellCellStencils::octreeInverseDistance::holeCuttingType
+>
+Foam::cellCellStencils::octreeInverseDistance::holeCuttingTypeNames
+({
+    { holeCuttingType::incremental, "incremental" },
+    { holeCuttingType::full, "full" },
+});
+
 const Foam::word
 Foam::cellCellStencils::octreeInverseDistance::stencilPart("oversetStencil");
 
@@ -47,7 +60,61 @@ Foam::cellCellStencils::octreeInverseDistance::orphanSetName
 );
 
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- FNV-1a over the bytes of n values
+template<class T>
+void hashBytes(uint64_t& h, const T* values, const std::size_t n)
+{
+    const unsigned char* bytes = reinterpret_cast<const unsigned char*>(values);
+    for (std::size_t i = 0; i < n*sizeof(T); ++i)
+    {
+        h ^= bytes[i];
+        h *= 1099511628211ull;
+    }
+}
+
+//- A checksum as 16 hex digits
+std::string checksumHex(const uint64_t h)
+{
+    char buf[24];
+    std::snprintf
+    (
+        buf, sizeof(buf), "%016llx", static_cast<unsigned long long>(h)
+    );
+    return buf;
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+uint64_t Foam::cellCellStencils::octreeInverseDistance::stencilChecksum
+(
+    const globalIndex& globalCells
+) const
+{
+    uint64_t sum = 0;
+    for (const label celli : interpolationCells_)
+    {
+        uint64_t h = 14695981039346656037ull;
+        const label globalCelli = globalCells.toGlobal(celli);
+        hashBytes(h, &globalCelli, 1);
+        const labelList& stencil = stencilGlobal_[celli];
+        hashBytes(h, stencil.cdata(), stencil.size());
+        const scalarList& weights = cellInterpolationWeights_[celli];
+        hashBytes(h, weights.cdata(), weights.size());
+        hashBytes(h, &cellInterpolationWeight_[celli], 1);
+        sum += h;
+    }
+    reduce(sum, sumOp<uint64_t>());
+    return sum;
+}
+
 
 void Foam::cellCellStencils::octreeInverseDistance::readSettings()
 {
@@ -62,6 +129,22 @@ void Foam::cellCellStencils::octreeInverseDistance::readSettings()
             << searchTypeNames.sortedToc() << exit(FatalIOError);
     }
     search_ = searchTypeNames[searchName];
+
+    const word holeCuttingName
+    (
+        dict_.getOrDefault<word>
+        (
+            "holeCutting",
+            holeCuttingTypeNames[holeCuttingType::incremental]
+        )
+    );
+    if (!holeCuttingTypeNames.found(holeCuttingName))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "holeCutting " << holeCuttingName << " unknown: must be one of "
+            << holeCuttingTypeNames.sortedToc() << exit(FatalIOError);
+    }
+    holeCutting_ = holeCuttingTypeNames[holeCuttingName];
 
     maxWalk_ = dict_.getOrDefault<label>("maxWalk", 16);
     if (maxWalk_ < 0)
@@ -170,6 +253,8 @@ void Foam::cellCellStencils::octreeInverseDistance::buildZone
         }
         radius[i] = Foam::sqrt(r2);
     }
+
+    buildBins(zonei);
 }
 
 
@@ -192,6 +277,10 @@ void Foam::cellCellStencils::octreeInverseDistance::buildCache
     prevRemote_.setSize(nZones);
     procBb_.setSize(nZones);
     cellRadius_.setSize(nZones);
+    binBb_.setSize(nZones);
+    binDivs_.setSize(nZones);
+    binStart_.setSize(nZones);
+    binCells_.setSize(nZones);
     zoneResidual_.setSize(nZones, Zero);
 
     // Voxel maps: refilled at the next update
@@ -199,6 +288,7 @@ void Foam::cellCellStencils::octreeInverseDistance::buildCache
     patchBlocks_.clear();
     patchParts_.setSize(nZones);
     patchBlocks_.setSize(nZones);
+    patchBlockList_.setSize(nZones);
     patchFilled_.setSize(nZones);
     patchFilledBb_.setSize(nZones);
     patchFilledDivs_.setSize(nZones, labelVector::zero);
@@ -212,6 +302,7 @@ void Foam::cellCellStencils::octreeInverseDistance::buildCache
     remoteBlocks_.clear();
     remoteParts_.setSize(nZones);
     remoteBlocks_.setSize(nZones);
+    remoteBlockList_.setSize(nZones);
     remoteMin_.setSize(nZones);
     remoteMax_.setSize(nZones);
     remoteSet_.setSize(nZones);
@@ -221,6 +312,7 @@ void Foam::cellCellStencils::octreeInverseDistance::buildCache
         buildZone(zonei, zoneID);
     }
     cacheNCells_ = mesh_.nCells();
+    fullReason_ = "cache built";
 
     Info<< type() << " : built the search cache of " << nZones
         << " zones in their own frames at time " << mesh_.time().timeName()
@@ -359,10 +451,12 @@ void Foam::cellCellStencils::octreeInverseDistance::markZoneBoundaries
                         {
                             for (label bk = b0.z(); bk <= b1.z(); ++bk)
                             {
-                                blocks.set
-                                (
-                                    index(nBlocks, labelVector(bi, bj, bk))
-                                );
+                                const label blocki =
+                                    index(nBlocks, labelVector(bi, bj, bk));
+                                if (blocks.set(blocki))
+                                {
+                                    patchBlockList_[zonei].append(blocki);
+                                }
                             }
                         }
                     }
@@ -492,6 +586,7 @@ void Foam::cellCellStencils::octreeInverseDistance::clearVoxels
         );
     }
     patchFilled_[zonei].clear();
+    patchBlockList_[zonei].clear();
     patchMin_[zonei] = labelVector::uniform(labelMax);
     patchMax_[zonei] = labelVector::uniform(-1);
 }
@@ -505,10 +600,12 @@ void Foam::cellCellStencils::octreeInverseDistance::markHoles
     const List<labelVector>& patchDivisions,
     const PackedList<2>& srcPatchTypes,
     const PackedList<1>& blocks,
+    const labelUList& blockList,
     const labelVector& pMin,
     const labelVector& pMax,
+    const bool incremental,
     labelList& allCellTypes
-) const
+)
 {
     const treeBoundBox& srcPatchBb = patchBb[srcI][0];
     const labelVector& nDivs = patchDivisions[srcI];
@@ -531,7 +628,17 @@ void Foam::cellCellStencils::octreeInverseDistance::markHoles
     // Deviation from rigid motion (points and centre) and round-off
     const scalar margin = 4*zoneResidual_[tgtI];
 
-    forAll(cellMap, i)
+    // The cells to test (zone cell indices): those the PATCH blocks can
+    // reach, or all
+    const labelList tested
+    (
+        incremental
+      ? holeCandidates(tgtI, srcPatchBb, nDivs, blockList)
+      : identity(cellMap.size())
+    );
+    nHoleTested_ += tested.size();
+
+    for (const label i : tested)
     {
         const label celli = cellMap[i];
 
@@ -595,52 +702,63 @@ void Foam::cellCellStencils::octreeInverseDistance::markHoles
 
 void Foam::cellCellStencils::octreeInverseDistance::findDonors
 (
+    const labelUList& cells,
     const globalIndex& globalCells,
     const labelList& allCellTypes,
-    const label srcI,
-    const label tgtI,
     labelListList& allStencil,
     labelList& allDonor
 )
 {
-    const zoneDonorSearch& search = zoneSearch_[srcI];
-    const labelList& srcCellMap = zoneParts_[srcI].cellMap();
-    const labelList& tgtCellMap = zoneParts_[tgtI].cellMap();
+    const labelList& zoneID = this->zoneID();
     const pointField& cc = mesh_.cellCentres();
     const labelListList& cellCells = mesh_.cellCells();
 
-    labelList& prev = prevDonor_[srcI];
+    nDonorSearched_ += cells.size();
 
-    for (const label celli : tgtCellMap)
+    forAll(zoneSearch_, srcI)
     {
-        // Seed: the previous donor, else a face neighbour's donor
-        label seed = prev[celli];
-        if (seed < 0)
+        const zoneDonorSearch& search = zoneSearch_[srcI];
+        const labelList& srcCellMap = zoneParts_[srcI].cellMap();
+        labelList& prev = prevDonor_[srcI];
+
+        for (const label celli : cells)
         {
-            for (const label nbr : cellCells[celli])
+            const label tgtI = zoneID[celli];
+            if (tgtI == srcI)
             {
-                if (prev[nbr] >= 0)
+                continue;
+            }
+
+            // Seed: the previous donor, else a face neighbour's donor
+            label seed = prev[celli];
+            if (seed < 0)
+            {
+                for (const label nbr : cellCells[celli])
                 {
-                    seed = prev[nbr];
-                    break;
+                    if (prev[nbr] >= 0)
+                    {
+                        seed = prev[nbr];
+                        break;
+                    }
                 }
             }
-        }
 
-        const label srcCelli =
-            search.findCell(search.toReference(cc[celli]), seed);
-        prev[celli] = srcCelli;
+            const label srcCelli =
+                search.findCell(search.toReference(cc[celli]), seed);
+            prev[celli] = srcCelli;
 
-        if
-        (
-            srcCelli != -1
-         && allCellTypes[srcCellMap[srcCelli]] != HOLE
-         && betterDonor(tgtI, allDonor[celli], srcI)
-        )
-        {
-            allStencil[celli].setSize(1);
-            allStencil[celli][0] = globalCells.toGlobal(srcCellMap[srcCelli]);
-            allDonor[celli] = srcI;
+            if
+            (
+                srcCelli != -1
+             && allCellTypes[srcCellMap[srcCelli]] != HOLE
+             && betterDonor(tgtI, allDonor[celli], srcI)
+            )
+            {
+                allStencil[celli].setSize(1);
+                allStencil[celli][0] =
+                    globalCells.toGlobal(srcCellMap[srcCelli]);
+                allDonor[celli] = srcI;
+            }
         }
     }
 }
@@ -913,6 +1031,7 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
                 << rigidTolerance_*size << "; rebuilding its search cache"
                 << endl;
             buildZone(zonei, zoneID);
+            fullReason_ = "zone " + Foam::name(zonei) + " rebuilt";
         }
 
         const boundBox bb(points, zoneParts_[zonei].pointMap(), true);
@@ -990,12 +1109,26 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
 
     lap("Voxels");
 
-    // 3. Holes and donors, pairs of zones in the stock order
+    // 3. Holes and donors.  Incremental: the hole test only for the cells
+    //    the PATCH voxels can reach, donors only for the cells whose donors
+    //    matter; full: every cell (the first update after the cache was
+    //    built, or holeCutting full)
+    const bool incremental =
+        holeCutting_ == holeCuttingType::incremental && fullReason_.empty();
+    const word mode
+    (
+        incremental ? word("incremental")
+      : fullReason_.size() ? word("full (" + fullReason_ + ")")
+      : word("full (holeCutting full)")
+    );
+    fullReason_.clear();
+
     labelList allCellTypes(mesh_.nCells(), CALCULATED);
     labelListList allStencil(mesh_.nCells());
     labelList allDonorID(mesh_.nCells(), -1);
     const globalIndex globalCells(mesh_.nCells());
 
+    nHoleTested_ = 0;
     for (label srcI = 0; srcI < nZones - 1; ++srcI)
     {
         for (label tgtI = srcI + 1; tgtI < nZones; ++tgtI)
@@ -1007,16 +1140,17 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
                 markHoles
                 (
                     s, t, patchBb, patchDivisions,
-                    patchParts_[s], patchBlocks_[s], patchMin_[s],
-                    patchMax_[s], allCellTypes
+                    patchParts_[s], patchBlocks_[s], patchBlockList_[s],
+                    patchMin_[s], patchMax_[s], incremental, allCellTypes
                 );
                 if (remoteParts_.set(s))
                 {
                     markHoles
                     (
                         s, t, patchBb, patchDivisions,
-                        remoteParts_[s], remoteBlocks_[s], remoteMin_[s],
-                        remoteMax_[s], allCellTypes
+                        remoteParts_[s], remoteBlocks_[s],
+                        remoteBlockList_[s], remoteMin_[s], remoteMax_[s],
+                        incremental, allCellTypes
                     );
                 }
             }
@@ -1029,20 +1163,6 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
     {
         zoneSearch_[zonei].resetCounters();
     }
-    for (label srcI = 0; srcI < nZones - 1; ++srcI)
-    {
-        for (label tgtI = srcI + 1; tgtI < nZones; ++tgtI)
-        {
-            findDonors
-            (
-                globalCells, allCellTypes, tgtI, srcI, allStencil, allDonorID
-            );
-            findDonors
-            (
-                globalCells, allCellTypes, srcI, tgtI, allStencil, allDonorID
-            );
-        }
-    }
 
     bitSet isOversetPatchCell(mesh_.nCells());
     forAll(allPatchTypes, celli)
@@ -1053,22 +1173,31 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
         }
     }
 
-    // Parallel: donors on other ranks for the cells whose donors matter
-    const labelList holeTypes(parallel ? allCellTypes : labelList());
+    // Donors (full: every cell on this rank) for the cells whose donors
+    // matter, on this rank (incremental) and the others (parallel); the
+    // donors must not be holes of the hole cutting
+    const labelList holeTypes(allCellTypes);
     bitSet queried(mesh_.nCells());
     nQueriesSent_ = 0;
-    if (parallel)
+    nDonorSearched_ = 0;
+    if (!incremental)
     {
-        findRemoteDonors
+        findDonors
         (
-            donorCandidates(allCellTypes, isOversetPatchCell),
-            globalCells,
-            allCellTypes,
-            allStencil,
-            allDonorID,
-            queried
+            identity(mesh_.nCells()), globalCells, allCellTypes, allStencil,
+            allDonorID
         );
     }
+    searchDonors
+    (
+        donorCandidates(allCellTypes, isOversetPatchCell),
+        incremental,
+        globalCells,
+        holeTypes,
+        allStencil,
+        allDonorID,
+        queried
+    );
 
     lap("Donors");
 
@@ -1106,6 +1235,7 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
     scalarField allWeight(mesh_.nCells(), Zero);
     walkFrontResolved
     (
+        !incremental,
         globalCells,
         holeTypes,
         floodTypes,
@@ -1158,13 +1288,20 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
     // Log
     {
         const labelList nCells(count(3, cellTypes_));
+        const uint64_t checksum = stencilChecksum(globalCells);
         Info<< type() << " : calculated " << nCells[CALCULATED]
             << " interpolated " << nCells[INTERPOLATED]
             << " hole " << nCells[HOLE]
             << " orphan " << returnReduce(orphans.size(), sumOp<label>())
             << " stencil " << (rebuilt ? "rebuilt" : "reused")
             << " (rebuilt " << nStencilBuilt_
-            << " reused " << nStencilReused_ << ")" << nl << incrIndent;
+            << " reused " << nStencilReused_ << ")" << nl << incrIndent
+            << indent << "holes " << mode << ": hole test "
+            << returnReduce(nHoleTested_, sumOp<label>())
+            << " cells, donor search "
+            << returnReduce(nDonorSearched_, sumOp<label>())
+            << " cells; stencil checksum " << word(checksumHex(checksum))
+            << nl;
         forAll(zoneSearch_, zonei)
         {
             const zoneDonorSearch& s = zoneSearch_[zonei];
@@ -1199,6 +1336,7 @@ Foam::cellCellStencils::octreeInverseDistance::octreeInverseDistance
 :
     inverseDistance(mesh, dict, false),
     search_(searchType::cached),
+    holeCutting_(holeCuttingType::incremental),
     maxWalk_(16),
     rigidTolerance_(1e-6),
     layerRelax_(1),
@@ -1211,11 +1349,17 @@ Foam::cellCellStencils::octreeInverseDistance::octreeInverseDistance
     zoneSearch_(),
     prevDonor_(),
     cacheNCells_(-1),
+    fullReason_("first update"),
+    binBb_(),
+    binDivs_(),
+    binStart_(),
+    binCells_(),
     timers_(stepTimers::New(mesh.time())),
     procBb_(),
     prevRemote_(),
     patchParts_(),
     patchBlocks_(),
+    patchBlockList_(),
     patchFilled_(),
     patchFilledBb_(),
     patchFilledDivs_(),
@@ -1227,11 +1371,14 @@ Foam::cellCellStencils::octreeInverseDistance::octreeInverseDistance
     patchVoxels_(),
     remoteParts_(),
     remoteBlocks_(),
+    remoteBlockList_(),
     remoteMin_(),
     remoteMax_(),
     remoteSet_(),
     nVoxelsSent_(0),
     nQueriesSent_(0),
+    nHoleTested_(0),
+    nDonorSearched_(0),
     cellRadius_(),
     zoneResidual_(),
     donorGlobal_(),

@@ -109,6 +109,7 @@ void Foam::cellCellStencils::octreeInverseDistance::exchangePatchVoxels
             remoteBlocks_[zonei] = 0u;
         }
         remoteSet_[zonei].clear();
+        remoteBlockList_[zonei].clear();
         remoteMin_[zonei] = labelVector::uniform(labelMax);
         remoteMax_[zonei] = labelVector::uniform(-1);
     }
@@ -254,7 +255,11 @@ void Foam::cellCellStencils::octreeInverseDistance::exchangePatchVoxels
             {
                 const labelVector ijk(index3(nDivs, v));
                 types.set(v, patchCellType::PATCH);
-                blocks.set(index(nBlocks, ijk/voxelBlock));
+                const label blocki = index(nBlocks, ijk/voxelBlock);
+                if (blocks.set(blocki))
+                {
+                    remoteBlockList_[zonei].append(blocki);
+                }
                 remoteSet_[zonei].append(v);
                 remoteMin_[zonei] = min(remoteMin_[zonei], ijk);
                 remoteMax_[zonei] = max(remoteMax_[zonei], ijk);
@@ -264,77 +269,13 @@ void Foam::cellCellStencils::octreeInverseDistance::exchangePatchVoxels
 }
 
 
-Foam::labelList
-Foam::cellCellStencils::octreeInverseDistance::donorCandidates
-(
-    const labelList& allCellTypes,
-    const bitSet& isOversetPatchCell
-) const
-{
-    const labelList& own = mesh_.faceOwner();
-    const labelList& nei = mesh_.faceNeighbour();
-    const label nInternal = mesh_.nInternalFaces();
-
-    bitSet candidate(mesh_.nCells());
-
-    forAll(allCellTypes, celli)
-    {
-        const label prevType =
-            celli < cellTypes_.size() ? cellTypes_[celli] : CALCULATED;
-        if
-        (
-            needsDonor
-            (
-                allCellTypes[celli], prevType, isOversetPatchCell[celli]
-            )
-        )
-        {
-            candidate.set(celli);
-        }
-    }
-
-    // Next to a hole, across internal and coupled faces
-    for (label facei = 0; facei < nInternal; ++facei)
-    {
-        const bool ownHole = (allCellTypes[own[facei]] == HOLE);
-        const bool neiHole = (allCellTypes[nei[facei]] == HOLE);
-        if (ownHole && !neiHole)
-        {
-            candidate.set(nei[facei]);
-        }
-        else if (neiHole && !ownHole)
-        {
-            candidate.set(own[facei]);
-        }
-    }
-
-    labelList nbrTypes;
-    syncTools::swapBoundaryCellList(mesh_, allCellTypes, nbrTypes);
-    for (label facei = nInternal; facei < mesh_.nFaces(); ++facei)
-    {
-        const label celli = own[facei];
-        if
-        (
-            nbrTypes[facei - nInternal] == HOLE
-         && allCellTypes[celli] != HOLE
-        )
-        {
-            candidate.set(celli);
-        }
-    }
-
-    return candidate.toc();
-}
-
-
 void Foam::cellCellStencils::octreeInverseDistance::findRemoteDonors
 (
     const labelUList& cells,
     const globalIndex& globalCells,
     const labelList& allCellTypes,
     labelListList& allStencil,
-    labelList& allDonor,
-    bitSet& queried
+    labelList& allDonor
 )
 {
     const label nZones = zoneSearch_.size();
@@ -354,7 +295,6 @@ void Foam::cellCellStencils::octreeInverseDistance::findRemoteDonors
 
     for (const label celli : cells)
     {
-        queried.set(celli);
         const label tgti = zoneID[celli];
 
         for (label srci = 0; srci < nZones; ++srci)
@@ -465,60 +405,6 @@ void Foam::cellCellStencils::octreeInverseDistance::findRemoteDonors
             allStencil[celli][0] = donors[i];
             allDonor[celli] = srci;
         }
-    }
-}
-
-
-void Foam::cellCellStencils::octreeInverseDistance::walkFrontResolved
-(
-    const globalIndex& globalCells,
-    const labelList& holeTypes,
-    const labelList& floodTypes,
-    labelList& allCellTypes,
-    labelListList& allStencil,
-    labelList& allDonor,
-    scalarField& allWeight,
-    bitSet& queried
-)
-{
-    while (true)
-    {
-        walkFront(layerRelax_, allStencil, allCellTypes, allWeight);
-
-        if (!Pstream::parRun())
-        {
-            return;
-        }
-
-        // Cells whose type the walk set (from their stencil or its
-        // absence) that were not asked for remote donors
-        DynamicList<label> unresolved;
-        forAll(allCellTypes, celli)
-        {
-            if (allCellTypes[celli] != floodTypes[celli] && !queried[celli])
-            {
-                unresolved.append(celli);
-            }
-        }
-
-        if (returnReduce(unresolved.empty(), andOp<bool>()))
-        {
-            return;
-        }
-
-        findRemoteDonors
-        (
-            unresolved,
-            globalCells,
-            holeTypes,
-            allStencil,
-            allDonor,
-            queried
-        );
-
-        // Again from the flood-filled types
-        allCellTypes = floodTypes;
-        allWeight = Zero;
     }
 }
 
