@@ -4,7 +4,8 @@
     bench/overset/peakMemory.py [-p NAME] [-o FILE] -- COMMAND [ARGS ...]
 
 Polls /proc every 0.2 s for processes whose name is NAME (default
-overPimpleDyMFoam) and records each one's VmHWM (its peak resident set size,
+overPimpleDyMFoam) that descend from COMMAND (so that other runs on the
+machine are not counted) and records each one's VmHWM (its peak resident set size,
 kept by the kernel, so short peaks between polls are not missed).  At the end
 prints, and writes to FILE, the sum of the peaks over the processes (the
 ranks of a parallel run) in MiB.  Exits with the command's exit status.
@@ -29,17 +30,37 @@ def hwm_kib(pid):
     return None
 
 
-def solver_pids(name):
+def parent(pid):
+    """Parent pid of a process, or None if it is gone."""
+    try:
+        with open("/proc/%d/stat" % pid) as f:
+            # pid (comm) state ppid ...: comm may hold spaces
+            return int(f.read().rsplit(")", 1)[1].split()[1])
+    except (OSError, ValueError, IndexError):
+        return None
+
+
+def descends(pid, ancestor):
+    while pid and pid > 1:
+        if pid == ancestor:
+            return True
+        pid = parent(pid)
+    return False
+
+
+def solver_pids(name, ancestor):
     pids = []
     for entry in os.listdir("/proc"):
         if not entry.isdigit():
             continue
         try:
             with open("/proc/%s/comm" % entry) as f:
-                if f.read().strip() == name[:15]:
-                    pids.append(int(entry))
+                if f.read().strip() != name[:15]:
+                    continue
         except OSError:
-            pass
+            continue
+        if descends(int(entry), ancestor):
+            pids.append(int(entry))
     return pids
 
 
@@ -56,7 +77,7 @@ def main():
     proc = subprocess.Popen(command)
     peaks = {}
     while proc.poll() is None:
-        for pid in solver_pids(args.process):
+        for pid in solver_pids(args.process, proc.pid):
             kib = hwm_kib(pid)
             if kib is not None:
                 peaks[pid] = max(peaks.get(pid, 0), kib)
