@@ -11,7 +11,7 @@ the overset parts, then the median over the rounds; overset share of total;
 peak memory (median over the rounds); the speed-ups of the stencil update
 with the mesh motion (oversetMovePoints) over inverseDistance and
 trackingInverseDistance of the same level and ranks, and the memory ratio
-to inverseDistance) and PREFIX.png (stacked bars of the medians).
+to inverseDistance) and PREFIX.png (stacked bars of the medians, and the peak memory).
 """
 
 import argparse
@@ -129,7 +129,9 @@ def main():
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    fig, ax = plt.subplots(figsize=(max(6, 1.1*len(rows)), 4.5))
+    fig, (ax, axm) = plt.subplots(
+        2, 1, figsize=(max(6, 1.1*len(rows)), 7.5), sharex=True,
+        gridspec_kw=dict(height_ratios=(2, 1)))
     x = np.arange(len(rows))
     bottom = np.zeros(len(rows))
     for part, colour in (("rbd", "tab:green"), ("overset", "tab:red"),
@@ -137,13 +139,15 @@ def main():
         v = np.array([r["med"][part] for r in rows])
         ax.bar(x, v, bottom=bottom, color=colour, label=part)
         bottom += v
-    ax.set_xticks(x)
-    ax.set_xticklabels(["%s\nnp %d\n%s" % (r["level"], r["np"],
-                        r["stencil"].replace("InverseDistance", "ID"))
-                        for r in rows], fontsize=8)
     ax.set_ylabel("median time per step [s]")
     ax.set_title("single-wing drone: where a time step goes")
     ax.legend()
+    axm.bar(x, [r["mem"] for r in rows], color="tab:gray")
+    axm.set_ylabel("peak memory [MiB]\n(sum over ranks)")
+    axm.set_xticks(x)
+    axm.set_xticklabels(["%s\nnp %d\n%s" % (r["level"], r["np"],
+                         r["stencil"].replace("InverseDistance", "ID"))
+                         for r in rows], fontsize=8)
     fig.tight_layout()
     fig.savefig(args.o + ".png", dpi=120)
     print("summarise: wrote %s.md, %s.png" % (args.o, args.o))
