@@ -234,6 +234,17 @@ void Foam::eABAMeshMotion::calcBodyLoads()
 }
 
 
+Foam::wordList Foam::eABAMeshMotion::loadedBodies() const
+{
+    wordList names(bodyMeshes_.size());
+    forAll(bodyMeshes_, i)
+    {
+        names[i] = bodyMeshes_[i].name;
+    }
+    return names;
+}
+
+
 Foam::vector Foam::eABAMeshMotion::centreOfMass
 (
     const spatialTransform& X0,

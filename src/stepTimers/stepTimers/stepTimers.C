@@ -32,7 +32,8 @@ Foam::stepTimers::stepTimers(const objectRegistry& db)
             IOobject::NO_WRITE,
             true
         )
-    )
+    ),
+    lastTimeIndex_(-1)
 {}
 
 
@@ -120,6 +121,22 @@ void Foam::stepTimers::reset()
     }
 
     stamps_.clear();
+}
+
+
+void Foam::stepTimers::setLast
+(
+    const label timeIndex,
+    const wordList& columns,
+    const scalarList& values
+)
+{
+    last_.clear();
+    forAll(columns, i)
+    {
+        last_.set(columns[i], values[i]);
+    }
+    lastTimeIndex_ = timeIndex;
 }
 
 

@@ -452,6 +452,18 @@ bool Foam::functionObjects::stepTimers::execute()
         record(values);
     }
 
+    // The row, for other function objects of this step (flightData)
+    {
+        wordList columns(measured);
+        columns.append(parts_);
+        timers_.setLast
+        (
+            time_.timeIndex(),
+            columns,
+            SubList<scalar>(values, columns.size())
+        );
+    }
+
     timers_.reset();
 
     previous_ = now;

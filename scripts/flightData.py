@@ -1,0 +1,205 @@
+#!/usr/bin/python3
+"""Read and check the flight data (HDF5) of a drone run.
+
+A run's file is postProcessing/flightData/<start>/flightData.h5 (the
+flightData function object, src/flightData): the earliest start folder that
+holds one (restarts append to it).
+
+    flightData.py check CASE [--rows N] [--attr KEY=VALUE ...] [--log LOG]
+        one file; every dataset has the same rows; time strictly increasing
+        with a uniform step (fixed-step runs; --variableStep to skip); no
+        NaN but in the first row's loads and timers (the initial state);
+        the root attributes case, level, stencil, nRanks, decomposition,
+        commit present (and equal to KEY=VALUE); with --rows exactly N rows;
+        with --log, a solver log of a run that was killed: every step the
+        log shows completed (a later "Time =" line) has its row.
+    flightData.py compare REF CASE [--tol T] [--datasets a,b] [--exclude timers]
+        the same datasets and rows, time equal, every other dataset
+        max |a - b| / max(max |REF column|, 1e-9 max |REF dataset|) <= T
+        per column (timers excluded by default); one line per dataset.
+
+One PASS/FAIL line per check; exit status 1 on a failure.  As a module:
+find(case), load(case) -> (attrs, {name: array}).
+"""
+
+import argparse
+import glob
+import os
+import re
+import sys
+
+import numpy as np
+
+
+def find(case):
+    """The run's flightData.h5 (earliest start folder holding one)."""
+    files = glob.glob(os.path.join(case, "postProcessing", "flightData", "*",
+                                   "flightData.h5"))
+
+    def start(f):
+        try:
+            return float(os.path.basename(os.path.dirname(f)))
+        except ValueError:
+            return float("inf")
+    files.sort(key=start)
+    return files[0] if files else None
+
+
+def load(case):
+    """(attributes, {dataset path: array}) of a run's file."""
+    import h5py
+    path = find(case)
+    if path is None:
+        raise FileNotFoundError("no postProcessing/flightData/*/flightData.h5"
+                                " in %s" % case)
+    data = {}
+    with h5py.File(path, "r") as f:
+        attrs = {k: (v.decode() if isinstance(v, bytes) else str(v))
+                 for k, v in f.attrs.items()}
+
+        def visit(name, obj):
+            if isinstance(obj, h5py.Dataset):
+                data[name] = obj[()]
+        f.visititems(visit)
+    return attrs, data
+
+
+def report(ok, what):
+    print("%s %s" % ("PASS" if ok else "FAIL", what))
+    return 0 if ok else 1
+
+
+def check(a):
+    try:
+        attrs, data = load(a.case)
+    except (OSError, FileNotFoundError) as e:
+        return report(False, "flightData %s: cannot read: %s" % (a.case, e))
+    status = 0
+    name = os.path.basename(os.path.normpath(a.case))
+    t = data.get("time")
+    if t is None:
+        return report(False, "flightData %s: no time dataset" % name)
+    n = len(t)
+
+    rows = {k: len(v) for k, v in data.items()}
+    status |= report(all(r == n for r in rows.values()),
+                     "flightData %s: %d datasets, all with %d rows"
+                     % (name, len(rows), n))
+    if a.rows is not None:
+        status |= report(n == a.rows, "flightData %s: %d rows (expected %d)"
+                         % (name, n, a.rows))
+    dt = np.diff(t)
+    ok = n > 1 and np.all(dt > 0)
+    if ok and not a.variableStep:
+        ok = np.max(np.abs(dt - dt[0])) <= 1e-9*abs(dt[0])
+    status |= report(ok, "flightData %s: time strictly increasing%s, "
+                     "%g to %g" % (name, "" if a.variableStep else
+                                   " with a uniform step", t[0], t[-1]))
+    bad = [k for k, v in data.items()
+           if np.isnan(np.asarray(v, dtype=float)[1:]).any()]
+    status |= report(not bad, "flightData %s: no NaN after the initial row%s"
+                     % (name, (" (NaN in %s)" % ", ".join(bad)) if bad
+                            else ""))
+    wanted = {"case": None, "level": None, "stencil": None, "nRanks": None,
+              "decomposition": None, "commit": None}
+    for kv in a.attr:
+        k, v = kv.split("=", 1)
+        wanted[k] = v
+    wrong = [k for k, v in wanted.items()
+             if k not in attrs or (v is not None and attrs[k] != v)]
+    status |= report(not wrong, "flightData %s: attributes %s%s"
+                     % (name, ", ".join("%s=%s" % (k, attrs.get(k))
+                                        for k in sorted(wanted)),
+                        (" (wrong: %s)" % ", ".join(wrong)) if wrong else ""))
+    if a.log:
+        # Steps the log started; each but the last was completed, and the
+        # function object wrote its row before the next "Time =" line
+        started = [float(x) for x in
+                   re.findall(r"^Time = (\S+)$", open(a.log).read(),
+                              re.MULTILINE)]
+        completed = started[:-1]
+        missing = [x for x in completed
+                   if not np.any(np.abs(t - x) <= 1e-9*max(abs(x), 1e-300))]
+        status |= report(not missing and len(completed) > 0,
+                         "flightData %s: all %d steps the killed run's log "
+                         "completed have their rows (file: %d rows to t = "
+                         "%g)%s" % (name, len(completed), n, t[-1],
+                                    (" missing %s" % missing[:5])
+                                    if missing else ""))
+    return status
+
+
+def compare(a):
+    try:
+        _, A = load(a.ref)
+        _, B = load(a.case)
+    except (OSError, FileNotFoundError) as e:
+        return report(False, "flightData compare: cannot read: %s" % e)
+    status = 0
+    ref = os.path.basename(os.path.normpath(a.ref))
+    name = os.path.basename(os.path.normpath(a.case))
+    exclude = set(a.exclude.split(",")) if a.exclude else set()
+    names = sorted(set(A) - exclude)
+    if a.datasets:
+        names = [d for d in a.datasets.split(",")]
+    status |= report(set(A) == set(B), "flightData %s vs %s: the same %d "
+                     "datasets" % (name, ref, len(A)))
+    if len(A["time"]) != len(B["time"]) or \
+            np.any(A["time"] != B["time"]):
+        return report(False, "flightData %s vs %s: times differ (%d and %d "
+                      "rows)" % (name, ref, len(A["time"]), len(B["time"])))
+    status |= report(True, "flightData %s vs %s: the same %d rows, times "
+                     "equal" % (name, ref, len(A["time"])))
+    worst = 0.0
+    lines = []
+    for d in names:
+        if d == "time" or d not in B:
+            continue
+        x = np.asarray(A[d], dtype=float)
+        y = np.asarray(B[d], dtype=float)
+        if x.shape != y.shape:
+            status |= report(False, "flightData %s vs %s: %s shapes %s and "
+                             "%s" % (name, ref, d, x.shape, y.shape))
+            continue
+        x2 = x.reshape(len(x), -1)
+        y2 = y.reshape(len(y), -1)
+        both = np.isnan(x2) & np.isnan(y2)
+        # Per column, floored at 1e-9 of the dataset's largest value (a
+        # column of round-off noise, e.g. y of a planar motion, is not
+        # compared to itself)
+        big = np.nanmax(np.abs(x2)) if x2.size else 0.0
+        scale = np.maximum(np.nanmax(np.abs(x2), axis=0),
+                           max(1e-9*big, 1e-300))
+        diff = np.where(both, 0.0, np.abs(x2 - y2))/scale
+        e = float(np.nanmax(diff)) if diff.size else 0.0
+        if np.isnan(diff).any():
+            e = float("inf")
+        worst = max(worst, e)
+        lines.append("%s %.1e" % (d, e))
+    status |= report(worst <= a.tol, "flightData %s vs %s: max relative "
+                     "difference %.2e (tol %g; per dataset: %s)"
+                     % (name, ref, worst, a.tol, ", ".join(lines)))
+    return status
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    sub = ap.add_subparsers(dest="command", required=True)
+    c = sub.add_parser("check")
+    c.add_argument("case")
+    c.add_argument("--rows", type=int)
+    c.add_argument("--attr", action="append", default=[])
+    c.add_argument("--log")
+    c.add_argument("--variableStep", action="store_true")
+    m = sub.add_parser("compare")
+    m.add_argument("ref")
+    m.add_argument("case")
+    m.add_argument("--tol", type=float, default=0.0)
+    m.add_argument("--datasets")
+    m.add_argument("--exclude", default="timers")
+    a = ap.parse_args()
+    return check(a) if a.command == "check" else compare(a)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

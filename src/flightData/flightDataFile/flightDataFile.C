@@ -1,0 +1,376 @@
+/*---------------------------------------------------------------------------*\
+  flapFoam: free-flight simulation of flapping-wing drones on OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "flightDataFile.H"
+#include "OSspecific.H"
+#include "error.H"
+
+#include <hdf5.h>
+
+// HDF5's macros (H5S_ALL, H5T_VARIABLE, ...) are C casts
+#pragma GCC diagnostic ignored "-Wold-style-cast"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+//- An HDF5 handle, closed when it goes out of scope
+class handle
+{
+    hid_t id_;
+    herr_t (*close_)(hid_t);
+
+public:
+
+    handle(const hid_t id, herr_t (*close)(hid_t))
+    :
+        id_(id),
+        close_(close)
+    {}
+
+    ~handle()
+    {
+        if (id_ >= 0)
+        {
+            close_(id_);
+        }
+    }
+
+    handle(const handle&) = delete;
+    void operator=(const handle&) = delete;
+
+    operator hid_t() const
+    {
+        return id_;
+    }
+
+    bool valid() const
+    {
+        return id_ >= 0;
+    }
+};
+
+
+//- FatalError naming the file and what failed if status < 0
+void check(const long status, const fileName& path, const std::string& what)
+{
+    if (status < 0)
+    {
+        FatalErrorInFunction
+            << "HDF5: " << what.c_str() << " failed for " << path
+            << exit(FatalError);
+    }
+}
+
+
+//- The paths of the datasets of a file (H5Ovisit)
+herr_t collectDatasets
+(
+    hid_t,
+    const char* name,
+    const H5O_info_t* info,
+    void* data
+)
+{
+    if (info->type == H5O_TYPE_DATASET)
+    {
+        static_cast<DynamicList<word>*>(data)->append(word(name, false));
+    }
+    return 0;
+}
+
+
+//- Open a file read-write (errors of the library silenced: ours name the
+//- file)
+hid_t openFile(const fileName& path, const bool readOnly = false)
+{
+    H5Eset_auto(H5E_DEFAULT, nullptr, nullptr);
+    return H5Fopen
+    (
+        path.c_str(),
+        readOnly ? H5F_ACC_RDONLY : H5F_ACC_RDWR,
+        H5P_DEFAULT
+    );
+}
+
+
+//- The times of a file's time dataset
+scalarList readTimes(const hid_t file, const fileName& path)
+{
+    if (H5Lexists(file, "time", H5P_DEFAULT) <= 0)
+    {
+        return scalarList();
+    }
+    handle ds(H5Dopen(file, "time", H5P_DEFAULT), H5Dclose);
+    check(ds, path, "open dataset time");
+    handle space(H5Dget_space(ds), H5Sclose);
+    hsize_t dims[2] = {0, 0};
+    H5Sget_simple_extent_dims(space, dims, nullptr);
+    scalarList times(static_cast<label>(dims[0]));
+    if (times.size())
+    {
+        check
+        (
+            H5Dread
+            (
+                ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
+                times.data()
+            ),
+            path,
+            "read dataset time"
+        );
+    }
+    return times;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::flightDataFile::flightDataFile
+(
+    const fileName& path,
+    const scalar restartTime
+)
+:
+    path_(path),
+    nRows_(0)
+{
+    if (isFile(path_))
+    {
+        handle file(openFile(path_), H5Fclose);
+        check(file, path_, "open (is it an HDF5 file?)");
+
+        // Keep the rows up to the restart time
+        const scalarList times(readTimes(file, path_));
+        const scalar tol = 1e-12*max(mag(restartTime), VSMALL);
+        while (nRows_ < times.size() && times[nRows_] <= restartTime + tol)
+        {
+            ++nRows_;
+        }
+
+        if (nRows_ < times.size())
+        {
+            DynamicList<word> datasets;
+            check
+            (
+                H5Ovisit
+                (
+                    file, H5_INDEX_NAME, H5_ITER_INC, collectDatasets,
+                    &datasets
+                ),
+                path_,
+                "list the datasets"
+            );
+            for (const word& name : datasets)
+            {
+                handle ds(H5Dopen(file, name.c_str(), H5P_DEFAULT), H5Dclose);
+                check(ds, path_, "open dataset " + name);
+                handle space(H5Dget_space(ds), H5Sclose);
+                hsize_t dims[2] = {0, 0};
+                H5Sget_simple_extent_dims(space, dims, nullptr);
+                dims[0] = nRows_;
+                check
+                (
+                    H5Dset_extent(ds, dims), path_, "cut dataset " + name
+                );
+            }
+        }
+    }
+    else
+    {
+        mkDir(path_.path());
+        handle file
+        (
+            H5Fcreate(path_.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, H5P_DEFAULT),
+            H5Fclose
+        );
+        check(file, path_, "create");
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::flightDataFile::setAttributes
+(
+    const List<Tuple2<word, string>>& attributes
+) const
+{
+    handle file(openFile(path_), H5Fclose);
+    check(file, path_, "open");
+
+    handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+    H5Tset_size(type, H5T_VARIABLE);
+    H5Tset_cset(type, H5T_CSET_UTF8);
+    handle space(H5Screate(H5S_SCALAR), H5Sclose);
+
+    for (const Tuple2<word, string>& a : attributes)
+    {
+        const char* name = a.first().c_str();
+        if (H5Aexists(file, name) > 0)
+        {
+            H5Adelete(file, name);
+        }
+        handle attr
+        (
+            H5Acreate2(file, name, type, space, H5P_DEFAULT, H5P_DEFAULT),
+            H5Aclose
+        );
+        check(attr, path_, "create attribute " + a.first());
+        const char* value = a.second().c_str();
+        check
+        (
+            H5Awrite(attr, type, &value), path_,
+            "write attribute " + a.first()
+        );
+    }
+}
+
+
+void Foam::flightDataFile::append(const row& r)
+{
+    handle file(openFile(path_), H5Fclose);
+    check(file, path_, "open");
+
+    handle lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
+    H5Pset_create_intermediate_group(lcpl, 1);
+
+    for (const entry& e : r)
+    {
+        const char* name = e.name.c_str();
+        const int rank = e.columns.empty() ? 1 : 2;
+        const hsize_t nCols = e.columns.empty() ? 1 : e.columns.size();
+
+        if (label(nCols) != e.values.size())
+        {
+            FatalErrorInFunction
+                << "dataset " << e.name << " of " << path_ << ": "
+                << e.values.size() << " values for " << label(nCols)
+                << " columns"
+                << abort(FatalError);
+        }
+
+        if (H5Lexists(file, name, H5P_DEFAULT) <= 0)
+        {
+            if (nRows_)
+            {
+                FatalErrorInFunction
+                    << "dataset " << e.name << " is not in " << path_
+                    << " (" << nRows_ << " rows): a restart must write the"
+                    << " same datasets as the run before" << exit(FatalError);
+            }
+
+            // Chunked, extendable along the rows
+            const hsize_t dims[2] = {0, nCols};
+            const hsize_t maxDims[2] = {H5S_UNLIMITED, nCols};
+            const hsize_t chunk[2] = {256, nCols};
+            handle space(H5Screate_simple(rank, dims, maxDims), H5Sclose);
+            handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+            H5Pset_chunk(dcpl, rank, chunk);
+            handle ds
+            (
+                H5Dcreate2
+                (
+                    file, name, H5T_IEEE_F64LE, space, lcpl, dcpl,
+                    H5P_DEFAULT
+                ),
+                H5Dclose
+            );
+            check(ds, path_, "create dataset " + e.name);
+
+            if (e.columns.size())
+            {
+                string columns;
+                for (const word& c : e.columns)
+                {
+                    columns += (columns.empty() ? "" : " ") + c;
+                }
+                handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+                H5Tset_size(type, H5T_VARIABLE);
+                H5Tset_cset(type, H5T_CSET_UTF8);
+                handle aspace(H5Screate(H5S_SCALAR), H5Sclose);
+                handle attr
+                (
+                    H5Acreate2
+                    (
+                        ds, "columns", type, aspace, H5P_DEFAULT, H5P_DEFAULT
+                    ),
+                    H5Aclose
+                );
+                const char* value = columns.c_str();
+                check
+                (
+                    H5Awrite(attr, type, &value), path_,
+                    "write the columns of " + e.name
+                );
+            }
+        }
+
+        handle ds(H5Dopen(file, name, H5P_DEFAULT), H5Dclose);
+        check(ds, path_, "open dataset " + e.name);
+
+        {
+            handle space(H5Dget_space(ds), H5Sclose);
+            hsize_t dims[2] = {0, 0};
+            H5Sget_simple_extent_dims(space, dims, nullptr);
+            if
+            (
+                H5Sget_simple_extent_ndims(space) != rank
+             || label(dims[0]) != nRows_
+             || (rank == 2 && dims[1] != nCols)
+            )
+            {
+                FatalErrorInFunction
+                    << "dataset " << e.name << " of " << path_ << " has "
+                    << label(dims[0]) << " rows of "
+                    << label(rank == 2 ? dims[1] : 1) << " columns; expected "
+                    << nRows_ << " of " << label(nCols)
+                    << exit(FatalError);
+            }
+        }
+
+        const hsize_t newDims[2] = {hsize_t(nRows_ + 1), nCols};
+        check(H5Dset_extent(ds, newDims), path_, "extend " + e.name);
+
+        handle fileSpace(H5Dget_space(ds), H5Sclose);
+        const hsize_t start[2] = {hsize_t(nRows_), 0};
+        const hsize_t count[2] = {1, nCols};
+        H5Sselect_hyperslab
+        (
+            fileSpace, H5S_SELECT_SET, start, nullptr, count, nullptr
+        );
+        handle memSpace(H5Screate_simple(rank, count, nullptr), H5Sclose);
+        check
+        (
+            H5Dwrite
+            (
+                ds, H5T_NATIVE_DOUBLE, memSpace, fileSpace, H5P_DEFAULT,
+                e.values.cdata()
+            ),
+            path_,
+            "write a row of " + e.name
+        );
+    }
+
+    ++nRows_;
+}
+
+
+Foam::label Foam::flightDataFile::countRows(const fileName& path)
+{
+    if (!isFile(path))
+    {
+        return 0;
+    }
+    handle file(openFile(path, true), H5Fclose);
+    return file.valid() ? readTimes(file, path).size() : 0;
+}
+
+
+// ************************************************************************* //

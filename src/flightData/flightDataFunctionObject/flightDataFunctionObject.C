@@ -1,0 +1,504 @@
+/*---------------------------------------------------------------------------*\
+  flapFoam: free-flight simulation of flapping-wing drones on OpenFOAM v1912
+\*---------------------------------------------------------------------------*/
+
+#include "flightDataFunctionObject.H"
+#include "fvMesh.H"
+#include "eABAMeshMotion.H"
+#include "stepTimers.H"
+#include "addToRunTimeSelectionTable.H"
+#include "IOdictionary.H"
+#include "OSspecific.H"
+#include "Time.H"
+#include "OStringStream.H"
+
+#include <cstdio>
+#include <limits>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace functionObjects
+{
+    defineTypeNameAndDebug(flightData, 0);
+    addToRunTimeSelectionTable(functionObject, flightData, dictionary);
+}
+}
+
+const Foam::word Foam::functionObjects::flightData::folderName("flightData");
+const Foam::word Foam::functionObjects::flightData::fileNameH5
+(
+    "flightData.h5"
+);
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+//- Column names prefix_0, prefix_1, ... for the given indices
+wordList indexed(const word& prefix, const labelUList& indices)
+{
+    wordList names(indices.size());
+    forAll(indices, i)
+    {
+        names[i] = prefix + "_" + Foam::name(indices[i]);
+    }
+    return names;
+}
+
+
+//- The components of a vector, of a tensor (row-major)
+scalarList components(const vector& v)
+{
+    return scalarList({v.x(), v.y(), v.z()});
+}
+
+scalarList components(const tensor& t)
+{
+    scalarList values(9);
+    for (direction i = 0; i < 9; ++i)
+    {
+        values[i] = t[i];
+    }
+    return values;
+}
+
+
+//- The output of a shell command's first line ("" on failure)
+string firstLine(const std::string& command)
+{
+    string line;
+    FILE* pipe = ::popen(command.c_str(), "r");
+    if (pipe)
+    {
+        char buf[256];
+        if (::fgets(buf, sizeof(buf), pipe))
+        {
+            line = buf;
+            line.replaceAll("\n", "");
+        }
+        ::pclose(pipe);
+    }
+    return line;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+const Foam::eABAMeshMotion&
+Foam::functionObjects::flightData::motion() const
+{
+    const HashTable<const eABAMeshMotion*> solvers
+    (
+        mesh_.lookupClass<eABAMeshMotion>()
+    );
+    if (solvers.size() != 1)
+    {
+        FatalErrorInFunction
+            << type() << " " << name() << ": the mesh has " << solvers.size()
+            << " eABAMeshMotion motion solvers; flightData needs exactly one"
+            << " (dynamicMeshDict: motionSolver eABAMeshMotion)"
+            << exit(FatalError);
+    }
+    return *solvers.cbegin()();
+}
+
+
+Foam::fileName Foam::functionObjects::flightData::filePath() const
+{
+    const fileName base
+    (
+        time_.globalPath()/functionObject::outputPrefix/folderName
+    );
+    const scalar startTime = time_.startTime().value();
+
+    // The latest start at or before this one that has a file
+    const fileNameList dirs(readDir(base, fileName::DIRECTORY));
+    scalar best = -GREAT;
+    fileName bestPath;
+    for (const fileName& d : dirs)
+    {
+        scalar t;
+        if
+        (
+            readScalar(d, t)
+         && t <= startTime + 1e-12*max(mag(startTime), VSMALL)
+         && t > best
+         && isFile(base/d/fileNameH5)
+        )
+        {
+            best = t;
+            bestPath = base/d/fileNameH5;
+        }
+    }
+    return bestPath.size() ? bestPath : base/time_.timeName()/fileNameH5;
+}
+
+
+Foam::List<Foam::Tuple2<Foam::word, Foam::string>>
+Foam::functionObjects::flightData::attributes(const scalar startTime) const
+{
+    DynamicList<Tuple2<word, string>> a;
+
+    a.append(Tuple2<word, string>("case", time_.caseName()));
+
+    word stencil("none");
+    if (mesh_.schemesDict().found("oversetInterpolation"))
+    {
+        mesh_.schemesDict().subDict("oversetInterpolation")
+            .readIfPresent("method", stencil);
+    }
+    a.append(Tuple2<word, string>("stencil", stencil));
+    a.append
+    (
+        Tuple2<word, string>("nRanks", Foam::name(Pstream::nProcs()))
+    );
+
+    string decomposition("none");
+    if (Pstream::parRun())
+    {
+        const IOdictionary decomposeDict
+        (
+            IOobject
+            (
+                "decomposeParDict",
+                time_.system(),
+                time_,
+                IOobject::MUST_READ,
+                IOobject::NO_WRITE,
+                false
+            )
+        );
+        decomposition =
+            decomposeDict.getOrDefault<word>("method", "unknown") + " "
+          + Foam::name(Pstream::nProcs());
+    }
+    a.append(Tuple2<word, string>("decomposition", decomposition));
+
+    const fileName projectDir(getEnv("FLAPFOAM_PROJECT_DIR"));
+    string commit
+    (
+        projectDir.size()
+      ? firstLine
+        (
+            "git -C '" + projectDir + "' rev-parse HEAD 2>/dev/null"
+        )
+      : string()
+    );
+    a.append
+    (
+        Tuple2<word, string>
+        (
+            "commit", commit.size() ? commit : string("unknown")
+        )
+    );
+
+    a.append(Tuple2<word, string>("level", "unknown"));
+    for (const Tuple2<word, string>& e : extraAttributes_)
+    {
+        bool replaced = false;
+        for (Tuple2<word, string>& old : a)
+        {
+            if (old.first() == e.first())
+            {
+                old.second() = e.second();
+                replaced = true;
+            }
+        }
+        if (!replaced)
+        {
+            a.append(e);
+        }
+    }
+
+    return List<Tuple2<word, string>>(std::move(a));
+}
+
+
+Foam::flightDataFile::row
+Foam::functionObjects::flightData::makeRow(const bool withLoads) const
+{
+    const eABAMeshMotion& m = motion();
+    const RBD::eABAMotion& model = m.model();
+    const RBD::rigidBodyModelState& s = model.state();
+    const scalar nan = std::numeric_limits<scalar>::quiet_NaN();
+
+    flightDataFile::row r;
+    auto add = [&r]
+    (
+        const word& name,
+        const wordList& columns,
+        const scalarList& values
+    )
+    {
+        r.append(flightDataFile::entry{name, columns, values});
+    };
+    add("time", wordList(), scalarList(1, s.t()));
+
+    const labelList dofs(identity(model.nDoF()));
+    add("joints/q", indexed("q", dofs), s.q());
+    add("joints/qDot", indexed("qDot", dofs), s.qDot());
+    add("joints/qDdot", indexed("qDdot", dofs), s.qDdot());
+
+    const labelList& prescribed = model.prescribed();
+    if (prescribed.size())
+    {
+        add
+        (
+            "joints/tau", indexed("tau", prescribed),
+            withLoads
+          ? scalarList(model.prescribedTau())
+          : scalarList(prescribed.size(), nan)
+        );
+        add
+        (
+            "joints/power", indexed("power", prescribed),
+            withLoads
+          ? scalarList(model.prescribedPower(s)())
+          : scalarList(prescribed.size(), nan)
+        );
+    }
+
+    const wordList xyz({"x", "y", "z"});
+    const scalar qRef = 0.5*m.rhoInf()*sqr(Uref_);
+
+    forAll(bodies_, i)
+    {
+        const word& body = bodies_[i];
+        const label bodyID = bodyIDs_[i];
+        const word prefix("bodies/" + body + "/");
+
+        const vector c(m.centreOfMass(bodyID));
+        const spatialVector v(model.v(bodyID, c));
+        const tensor R(model.X0(bodyID).E().T());
+
+        add(prefix + "position", xyz, components(c));
+        add(prefix + "velocity", xyz, components(v.l()));
+        add(prefix + "angularVelocity", xyz, components(v.w()));
+        add
+        (
+            prefix + "orientation",
+            wordList
+            ({
+                "xx", "xy", "xz", "yx", "yy", "yz", "zx", "zy", "zz"
+            }),
+            components(R)
+        );
+
+        // The load: force, and moment about the chosen centre of mass
+        vector F(vector::uniform(nan));
+        vector M(vector::uniform(nan));
+        if (withLoads)
+        {
+            const spatialVector& fx = m.load(bodyID);
+            const vector cM(m.centreOfMass(momentAbout_[i]));
+            F = fx.l();
+            M = fx.w() - (cM ^ F);
+        }
+        add(prefix + "force", xyz, components(F));
+        add(prefix + "moment", xyz, components(M));
+
+        add
+        (
+            "coefficients/" + body,
+            wordList({"C_xI", "C_zI", "C_m"}),
+            scalarList
+            ({
+                F.x()/(qRef*area_[i]),
+                F.z()/(qRef*area_[i]),
+                M.y()/(qRef*area_[i]*chord_[i])
+            })
+        );
+    }
+
+    // The step's timers (maxima over the ranks), if this step's
+    const Foam::stepTimers& timers = Foam::stepTimers::New(time_);
+    const bool timed =
+        withLoads && timers.lastTimeIndex() == time_.timeIndex();
+    const wordList timerColumns({"rbd", "overset", "pimple", "total"});
+    scalarList t(timerColumns.size(), nan);
+    if (timed)
+    {
+        forAll(timerColumns, i)
+        {
+            t[i] = timers.last(timerColumns[i]);
+        }
+    }
+    add("timers", timerColumns, t);
+
+    return r;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::functionObjects::flightData::flightData
+(
+    const word& name,
+    const Time& runTime,
+    const dictionary& dict
+)
+:
+    fvMeshFunctionObject(name, runTime, dict),
+    Uref_(0)
+{
+    read(dict);
+
+    // On every rank: reading decomposeParDict is collective
+    const scalar startTime = time_.startTime().value();
+    List<Tuple2<word, string>> a(attributes(startTime));
+    a.append(Tuple2<word, string>("lastStart", time_.timeName()));
+
+    if (Pstream::master())
+    {
+        const fileName path(filePath());
+        file_.reset(new flightDataFile(path, startTime));
+
+        Info<< type() << " " << this->name() << ": " << path << " ("
+            << file_->nRows() << " rows kept)" << endl;
+
+        file_->setAttributes(a);
+
+        // A fresh file (or one cut before this start): the initial state
+        if (file_->nRows() == 0)
+        {
+            file_->append(makeRow(false));
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::functionObjects::flightData::read(const dictionary& dict)
+{
+    fvMeshFunctionObject::read(dict);
+
+    Uref_ = dict.get<scalar>("Uref");
+    if (Uref_ <= 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Uref " << Uref_ << ": must be positive" << exit(FatalIOError);
+    }
+
+    const eABAMeshMotion& m = motion();
+    const wordList loaded(m.loadedBodies());
+    const RBD::eABAMotion& model = m.model();
+
+    const dictionary& coeffs = dict.subDict("coefficients");
+    bodies_ = loaded;
+    bodyIDs_.setSize(loaded.size());
+    area_.setSize(loaded.size());
+    chord_.setSize(loaded.size());
+    momentAbout_.setSize(loaded.size());
+
+    for (const word& key : coeffs.toc())
+    {
+        if (!loaded.found(key))
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "coefficients: body " << key << " has no load or mesh;"
+                << " the bodies with one are " << loaded
+                << exit(FatalIOError);
+        }
+    }
+
+    forAll(loaded, i)
+    {
+        const word& body = loaded[i];
+        if (!coeffs.isDict(body))
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "coefficients: no entry for body " << body
+                << " (area, chord): every body of " << loaded
+                << " needs one" << exit(FatalIOError);
+        }
+        const dictionary& bd = coeffs.subDict(body);
+        bodyIDs_[i] = model.bodyID(body);
+        area_[i] = bd.get<scalar>("area");
+        chord_[i] = bd.get<scalar>("chord");
+        if (area_[i] <= 0 || chord_[i] <= 0)
+        {
+            FatalIOErrorInFunction(bd)
+                << "area " << area_[i] << ", chord " << chord_[i]
+                << ": both must be positive" << exit(FatalIOError);
+        }
+        const word about(bd.getOrDefault<word>("momentAbout", body));
+        momentAbout_[i] = -1;
+        for (label b = 0; b < model.nBodies(); ++b)
+        {
+            if (model.name(b) == about)
+            {
+                momentAbout_[i] = b;
+            }
+        }
+        if (momentAbout_[i] < 0)
+        {
+            FatalIOErrorInFunction(bd)
+                << "momentAbout " << about << ": not a body of the model"
+                << exit(FatalIOError);
+        }
+    }
+
+    extraAttributes_.clear();
+    if (dict.isDict("attributes"))
+    {
+        const dictionary& ad = dict.subDict("attributes");
+        for (const word& key : ad.toc())
+        {
+            // A word, string or number, as written
+            ITstream& is = ad.lookup(key);
+            const token t(is);
+            string value;
+            if (t.isWord())
+            {
+                value = t.wordToken();
+            }
+            else if (t.isString())
+            {
+                value = t.stringToken();
+            }
+            else if (t.isNumber())
+            {
+                OStringStream os;
+                os << t;
+                value = os.str();
+            }
+            else
+            {
+                FatalIOErrorInFunction(ad)
+                    << "attributes: " << key << " must be a word, string or"
+                    << " number" << exit(FatalIOError);
+            }
+            extraAttributes_.append(Tuple2<word, string>(key, value));
+        }
+    }
+
+    return true;
+}
+
+
+bool Foam::functionObjects::flightData::execute()
+{
+    if (Pstream::master())
+    {
+        file_->append(makeRow(true));
+    }
+    return true;
+}
+
+
+bool Foam::functionObjects::flightData::write()
+{
+    return true;
+}
+
+
+// ************************************************************************* //
