@@ -4,11 +4,12 @@ Plots of a single-wing drone run (Allrun calls it at the end of a run).
 
     scripts/plotRun.py [-case DIR] [-o OUTDIR] [--dict FILE]
 
-Reads postProcessing/eABAMeshMotion/<startTime>/{joints,bodies}.dat of the
-case (the folders of a run and its restarts joined in time order: a restart
+Reads the run's flight data, postProcessing/flightData/<start>/flightData.h5
+(scripts/flightData.py; restarts append to it), or, for runs without it,
+postProcessing/eABAMeshMotion/<startTime>/{joints,bodies}.dat of the case
+(the folders of a run and its restarts joined in time order: a restart
 folder, whose first row is its first step, replaces the rows of the earlier
-folders from that time on) and writes, in
-OUTDIR (default DIR/plots):
+folders from that time on), and writes, in OUTDIR (default DIR/plots):
 
   trajectory.png         (a) x-z trajectory of the drone: x = q_1 (Tx),
                          z = q_0 (Tz), displacement of the surge link from
@@ -64,6 +65,8 @@ import wingGeometry as geo  # noqa: E402
 
 PLOT_STEP_TIMERS = os.path.normpath(
     os.path.join(HERE, "..", "..", "..", "scripts", "plotStepTimers.py"))
+sys.path.insert(0, os.path.dirname(PLOT_STEP_TIMERS))
+import flightData  # noqa: E402
 
 
 # --------------------------------------------------------------------------
@@ -250,6 +253,39 @@ def joinedTable(base, fileName, keepEarlierAtStart):
 
 # --------------------------------------------------------------------------
 
+def flightDataTables(case):
+    """The joints.dat and bodies.dat tables (columns, rows) from the run's
+    flightData.h5, or None without one.  The loads of a row are those of
+    the step that ends at its time, as in bodies.dat."""
+    if flightData.find(case) is None:
+        return None
+    _, d = flightData.load(case)
+    t = d["time"][:, None]
+    q, qDot, qDdot = d["joints/q"], d["joints/qDot"], d["joints/qDdot"]
+    jcols, jdata = ["time"], [t]
+    for i in range(q.shape[1]):
+        jcols += ["q_%d" % i, "qDot_%d" % i, "qDdot_%d" % i]
+        jdata += [q[:, i:i+1], qDot[:, i:i+1], qDdot[:, i:i+1]]
+    if "joints/tau" in d:
+        # column names tau_<q index>, as the dataset's columns
+        import h5py
+        with h5py.File(flightData.find(case), "r") as f:
+            prescribed = [c.split("_")[1]
+                          for c in f["joints/tau"].attrs["columns"].split()]
+        for k, qi in enumerate(prescribed):
+            jcols += ["tau_%s" % qi, "power_%s" % qi]
+            jdata += [d["joints/tau"][:, k:k+1], d["joints/power"][:, k:k+1]]
+    bcols, bdata = ["time"], [t]
+    bodies = sorted({k.split("/")[1] for k in d if k.startswith("bodies/")})
+    for b in bodies:
+        for name, key in (("c", "position"), ("F", "force"),
+                          ("M", "moment")):
+            for c, v in zip("xyz", d["bodies/%s/%s" % (b, key)].T):
+                bcols.append("%s:%s%s" % (b, name, c))
+                bdata.append(v[:, None])
+    return jcols, np.hstack(jdata), bcols, np.hstack(bdata)
+
+
 def shadeDownstrokes(ax, t, qDot):
     """Shade the intervals where phi decreases (qDot < 0)."""
     down = qDot < 0
@@ -288,10 +324,18 @@ def main():
     rho = float(coeffs.get("rhoInf", ["1.2"])[0])
 
     base = os.path.join(case, "postProcessing", "eABAMeshMotion")
-    if not startFolders(base):
-        sys.exit("plotRun: no %s/<time>/joints.dat" % base)
-    jcols, J = joinedTable(base, "joints.dat", keepEarlierAtStart=False)
-    bcols, B = joinedTable(base, "bodies.dat", keepEarlierAtStart=True)
+    tables = flightDataTables(case)
+    if tables is not None:
+        jcols, J, bcols, B = tables
+        source = "flightData.h5"
+        print("plotRun: reading %s" % flightData.find(case))
+    else:
+        if not startFolders(base):
+            sys.exit("plotRun: no %s/<time>/joints.dat and no flightData.h5"
+                     % base)
+        jcols, J = joinedTable(base, "joints.dat", keepEarlierAtStart=False)
+        bcols, B = joinedTable(base, "bodies.dat", keepEarlierAtStart=True)
+        source = "joints.dat: 12 digits"
     jc = {c: i for i, c in enumerate(jcols)}
     bc = {c: i for i, c in enumerate(bcols)}
     t = J[:, 0]
@@ -404,7 +448,7 @@ def main():
         axes[1].grid(True, alpha=0.3)
         axes[1].legend(fontsize=7)
         axes[0].set_title("Prescribed joints against the Wang kinematics "
-                          "(joints.dat: 12 digits)")
+                          "(%s)" % source)
         fig.tight_layout()
         fig.savefig(os.path.join(out, "prescribedJoints.png"), dpi=120)
         plt.close(fig)
