@@ -615,20 +615,24 @@ def componentOutline(comp, nPer=200):
         np.column_stack([xy, np.full(len(xy), z)]) for z in (-H, H)])
 
 
-def sweptEnvelope(comp, bg):
-    """Envelope of the component over |phi| <= phiMax, |alpha| <= alphaMax:
-    zMax, rMax (about the z axis), and the half-space y >= yA outside the
-    cylinder r <= rB."""
+def rotY(a):
+    return np.array([[math.cos(a), 0, math.sin(a)], [0, 1, 0],
+                     [-math.sin(a), 0, math.cos(a)]])
+
+
+def sweptEnvelope(comp, bg, tilts=(0.0,)):
+    """Envelope of the component over |phi| <= phiMax, |alpha| <= alphaMax
+    (and a pitch of the stroke plane about y by each angle of tilts: the
+    body pitch of the body-wing drone): zMax, rMax (about the z axis), and
+    the half-space y >= yA outside the cylinder r <= rB."""
     base = componentOutline(comp)
     pts = []
     for phi in np.linspace(-bg["phiMax"], bg["phiMax"], 61):
         for alpha in np.linspace(-bg["alphaMax"], bg["alphaMax"], 19):
             Rz = np.array([[math.cos(phi), -math.sin(phi), 0],
                            [math.sin(phi), math.cos(phi), 0], [0, 0, 1]])
-            Ry = np.array([[math.cos(alpha), 0, math.sin(alpha)],
-                           [0, 1, 0],
-                           [-math.sin(alpha), 0, math.cos(alpha)]])
-            pts.append(base @ (Rz @ Ry).T)
+            for tilt in tilts:
+                pts.append(base @ (rotY(tilt) @ Rz @ rotY(alpha)).T)
     pts = np.concatenate(pts)
     r = np.hypot(pts[:, 0], pts[:, 1])
     rMax = float(r.max())
@@ -680,7 +684,9 @@ def backgroundMesh(lev, bg, env):
     return bm, info
 
 
-def topoSetRefine(region, centre):
+def topoSetRefine(region, centre, extra=()):
+    """topoSetDict of a refinement pass: the region's cylinders, and the
+    extra actions (action, source, body) after them."""
     c = centre
     big = 10.0
     acts = [
@@ -700,6 +706,7 @@ def topoSetRefine(region, centre):
              "        radius %.9g;" % (c[0], c[1], c[2] - region["z"],
                                        c[0], c[1], c[2] + region["z"],
                                        region["rB"])))
+    acts.extend(extra)
     out = [FOAM_HEADER % ("dictionary", "topoSetDict"),
            "// Refinement region: the volume swept by the wing component "
            "plus a margin\n", "actions\n("]

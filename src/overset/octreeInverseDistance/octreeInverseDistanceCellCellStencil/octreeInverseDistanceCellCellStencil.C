@@ -12,6 +12,7 @@
 #include "stepTimers.H"
 #include "Time.H"
 #include "cellSet.H"
+#include "OStringStream.H"
 
 #include <cstdio>
 #include <string>
@@ -935,6 +936,38 @@ bool Foam::cellCellStencils::octreeInverseDistance::createStencilOnePass
 
     // Weights from the acceptor's centre (stock stencilWeights)
     const pointField& cc = mesh_.cellCentres();
+
+    // Acceptors left without a stencil: the donor became a hole after the
+    // donor search (flood fill or fringe walk) and so did all its
+    // neighbours.  The stock stencil keeps them interpolated from nothing
+    // (the momentum matrix then has a zero diagonal there); same here,
+    // with a warning that says where
+    {
+        DynamicList<label> empty;
+        forAll(acceptors, i)
+        {
+            if (donorCellCells[slots[i]].empty())
+            {
+                empty.append(acceptors[i]);
+            }
+        }
+        const label nEmpty = returnReduce(empty.size(), sumOp<label>());
+        if (nEmpty)
+        {
+            OStringStream where;
+            for (const label celli : empty)
+            {
+                where
+                    << nl << "    cell " << celli << " zone "
+                    << zoneID()[celli] << " at " << cc[celli];
+            }
+            WarningInFunction
+                << nEmpty << " interpolated cells have an empty stencil"
+                << " (their donor and its neighbours are holes) at time "
+                << mesh_.time().timeName() << "; on this rank:"
+                << where.str().c_str() << endl;
+        }
+    }
 
     if (same)
     {

@@ -1,0 +1,187 @@
+#!/usr/bin/python3
+"""
+Body-wing drone: the body's component mesh, a spherical shell around the
+sphere of radius one chord (cellZone "body").
+
+    sphereMesh.py <level> [-o FILE]         the blockMeshDict
+    sphereMesh.py --map POINTS [--centre X Y Z]
+                                            map blockMesh's points onto
+                                            the spheres (ascii points file)
+    sphereMesh.py --list
+
+Six blocks of a cubed sphere between the body surface (radius R1 = cbar,
+patch "body", wall) and the overset boundary (radius R2 = R1 + margin, patch
+"oversetPatch", overset).  blockMesh makes the shell between the cubes of
+half side 1 and 2 (n x n cells on each face, nR along the rays from the
+origin, graded geometrically from the wall spacing dsW); --map moves each
+point along its ray to the radius R1 + (rho - 1)(R2 - R1), rho its max-norm
+(a gnomonic cubed sphere: the faces lie exactly on the spheres).  blockMesh's
+own projection onto spheres is not used: with a hollow shell its interior
+points come from the flat cube faces, which crushes the wall cells.
+
+Units: metres.  Python: /usr/bin/python3.
+"""
+
+import argparse
+import math
+import os
+import sys
+
+CBAR = 0.015                # mean chord [m] (REFERENCE.md Table 1)
+R1 = CBAR                   # body radius: one chord
+MARGIN = 0.8*CBAR           # body -> overset boundary, as the wing's [m]
+
+# n: cells along a cube edge (4 n around a great circle); nR: radial cells;
+# dsW: first cell at the body surface [m]
+LEVELS = {
+    "tiny":     dict(n=6, nR=8, dsW=0.6e-3),
+    "coarse":   dict(n=10, nR=12, dsW=0.35e-3),
+    "medium":   dict(n=14, nR=16, dsW=0.25e-3),
+    "fine":     dict(n=20, nR=22, dsW=0.17e-3),
+    "finePlus": dict(n=24, nR=26, dsW=0.14e-3),
+}
+
+
+def expansion(L, n, d0):
+    """Ratio last/first of n geometric cells of total length L starting at
+    d0 (bisection on the growth factor)."""
+    if n == 1:
+        return 1.0
+    lo, hi = 1e-6, 10.0
+
+    def total(g):
+        return d0*n if abs(g - 1) < 1e-12 else d0*(g**n - 1)/(g - 1)
+    for _ in range(200):
+        mid = 0.5*(lo + hi)
+        if total(mid) > L:
+            hi = mid
+        else:
+            lo = mid
+    g = 0.5*(lo + hi)
+    return g**(n - 1)
+
+
+def blockMeshDict(level):
+    """The blockMeshDict of the shell between the cubes of half side 1 and
+    2 (straight edges: every radial block edge and grid line lies on a ray
+    from the origin), graded along the rays, and the level's parameters;
+    mapPoints() then puts it onto the spheres."""
+    lev = LEVELS[level]
+    n, nR, dsW = lev["n"], lev["nR"], lev["dsW"]
+    R2 = R1 + MARGIN
+    # radial grading from the wall: the block's third direction runs from
+    # the outer to the inner cube, so its ratio last/first is the inverse
+    # of the growth outwards
+    ratio = 1.0/expansion(MARGIN, nR, dsW)
+
+    def corners(r):
+        return [(sx*r, sy*r, sz*r) for (sx, sy, sz) in
+                [(-1, -1, -1), (1, -1, -1), (1, 1, -1), (-1, 1, -1),
+                 (-1, -1, 1), (1, -1, 1), (1, 1, 1), (-1, 1, 1)]]
+
+    verts = corners(1.0) + corners(2.0)     # 0-7 inner, 8-15 outer
+    # the six shell blocks of blockMesh's sphere7 tutorial topology, inner
+    # cube vertices 0-7, outer 8-15
+    blocks = [(9, 8, 12, 13, 1, 0, 4, 5), (10, 9, 13, 14, 2, 1, 5, 6),
+              (11, 10, 14, 15, 3, 2, 6, 7), (8, 11, 15, 12, 0, 3, 7, 4),
+              (8, 9, 10, 11, 0, 1, 2, 3), (13, 12, 15, 14, 5, 4, 7, 6)]
+    innerFaces = [(0, 4, 7, 3), (2, 6, 5, 1), (1, 5, 4, 0), (3, 7, 6, 2),
+                  (0, 3, 2, 1), (4, 5, 6, 7)]
+    outerFaces = [tuple(v + 8 for v in f) for f in innerFaces]
+
+    out = ["FoamFile { version 2.0; format ascii; class dictionary; "
+           "object blockMeshDict; }",
+           "// Body-wing drone: body component, level %s: n %d, nR %d, "
+           "dsW %g m (R1 %g m, R2 %g m); the cube shell |x|_max in [1, 2] "
+           "is mapped onto the spherical shell by sphereMesh.py --map"
+           % (level, n, nR, dsW, R1, R2),
+           "scale 1;",
+           "vertices", "("]
+    out += ["    (%g %g %g)  // %d" % (v + (i,)) for i, v in enumerate(verts)]
+    out += [");", "blocks", "("]
+    for b in blocks:
+        out.append("    hex (%s) body (%d %d %d) simpleGrading (1 1 %.12g)"
+                   % (" ".join(str(v) for v in b), n, n, nR, ratio))
+    out += [");", "edges ();", "boundary", "("]
+    out += ["    body", "    {", "        type wall;", "        faces",
+            "        ("]
+    out += ["            (%s)" % " ".join(map(str, f)) for f in innerFaces]
+    out += ["        );", "    }"]
+    out += ["    oversetPatch", "    {", "        type overset;",
+            "        faces", "        ("]
+    out += ["            (%s)" % " ".join(map(str, f)) for f in outerFaces]
+    out += ["        );", "    }", ");"]
+    return "\n".join(out) + "\n", dict(level=level, n=n, nR=nR, dsW=dsW,
+                                       growth=1.0/ratio, R1=R1, R2=R2,
+                                       cells=6*n*n*nR)
+
+
+def mapPoints(path, centre=(0.0, 0.0, 0.0)):
+    """Map the points of the cube shell (an ascii polyMesh points file) onto
+    the spherical shell: a point p with rho = max |p_i| in [1, 2] goes to
+    the radius R1 + (rho - 1)(R2 - R1) along its ray, then to centre.
+    Returns the number of points."""
+    import re
+    R2 = R1 + MARGIN
+    text = open(path).read()
+    # after the FoamFile header: "<count>\n(\n(x y z)\n...\n)"
+    m = re.compile(r"\n(\d+)\s*\(\s*\n").search(
+        text, text.index("}", text.index("FoamFile")))
+    count = int(m.group(1))
+    triple = re.compile(r"\(([^()]*)\)\s*")
+    pos = m.end()
+    pts = []
+    for _ in range(count):
+        t = triple.match(text, pos)
+        x, y, z = (float(v) for v in t.group(1).split())
+        pos = t.end()
+        rho = max(abs(x), abs(y), abs(z))
+        r = R1 + (rho - 1.0)*(R2 - R1)
+        norm = math.sqrt(x*x + y*y + z*z)
+        pts.append((centre[0] + r*x/norm, centre[1] + r*y/norm,
+                    centre[2] + r*z/norm))
+    rest = text[pos:]
+    if not rest.startswith(")"):
+        raise ValueError("%s: no ')' after %d points" % (path, count))
+    with open(path, "w") as f:
+        f.write(text[:m.start()] + "\n%d\n(\n" % count)
+        f.write("\n".join("(%.15g %.15g %.15g)" % p for p in pts))
+        f.write("\n" + rest)
+    return count
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[1])
+    ap.add_argument("level", nargs="?")
+    ap.add_argument("-o", default=None)
+    ap.add_argument("--centre", nargs=3, type=float, default=[0.0, 0.0, 0.0])
+    ap.add_argument("--map", metavar="POINTS",
+                    help="map the cube-shell points file (ascii) onto the "
+                         "spheres instead")
+    ap.add_argument("--list", action="store_true")
+    a = ap.parse_args()
+    if a.map:
+        n = mapPoints(a.map, tuple(a.centre))
+        print("sphereMesh: mapped %d points of %s" % (n, a.map),
+              file=sys.stderr)
+        return 0
+    if a.list or not a.level:
+        for k, v in LEVELS.items():
+            print("%-9s %s cells %d" % (k, v, 6*v["n"]**2*v["nR"]))
+        return 0
+    if a.level not in LEVELS:
+        sys.exit("sphereMesh.py: level %s: one of %s"
+                 % (a.level, ", ".join(LEVELS)))
+    text, info = blockMeshDict(a.level)
+    if a.o:
+        os.makedirs(os.path.dirname(os.path.abspath(a.o)), exist_ok=True)
+        with open(a.o, "w") as f:
+            f.write(text)
+    else:
+        sys.stdout.write(text)
+    print("sphereMesh: %s" % info, file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
