@@ -11,8 +11,9 @@ meshes that scripts/makeMesh turns into the overset mesh:
   <out>/background/system/topoSetDict.refine<i>  refinement regions along the
                                           wing path, one per refinement pass
                                           (refineHexMesh, 2x2x2 splitting)
-  <out>/meshGen.json                      parameters, planned block counts,
-                                          analytic wing area
+  <out>/meshGen.json                      components (merge order), parameters,
+                                          planned block counts, analytic wing
+                                          area
 
 Usage:
   meshGen.py <level> [-o DIR] [--phi DEG] [--alpha DEG]
@@ -810,7 +811,10 @@ def main(argv=None):
     writeCase(os.path.join(args.output, "background"), bbm,
               hdr + "// Single-wing drone: background cube\n\n", extra)
 
-    summary = dict(level=args.level, levelParameters=lev,
+    # components in merge order (scripts/makeOversetMesh): the wing is the
+    # master, so that its overset patch becomes the first patch
+    summary = dict(components=[dict(name="wing"), dict(name="background")],
+                   level=args.level, levelParameters=lev,
                    pose=dict(phiDeg=args.phi, alphaDeg=args.alpha),
                    geometry=geo.summary(),
                    component={k: v for k, v in COMPONENT.items()},
