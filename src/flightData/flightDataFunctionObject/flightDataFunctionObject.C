@@ -147,7 +147,7 @@ Foam::functionObjects::flightData::attributes(const scalar startTime) const
 {
     DynamicList<Tuple2<word, string>> a;
 
-    a.append(Tuple2<word, string>("case", time_.caseName()));
+    a.append(Tuple2<word, string>("case", time_.globalCaseName()));
 
     word stencil("none");
     if (mesh_.schemesDict().found("oversetInterpolation"))
