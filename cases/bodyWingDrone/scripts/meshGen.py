@@ -47,6 +47,15 @@ import sphereMesh  # noqa: E402
 # Body pitch the refined region allows for (the stroke plane tilts with it)
 THETA_MAX = math.radians(20)
 
+# The wing component of the single-wing drone, its root side 6 mm from the
+# root (instead of 0.8 cbar = 12 mm): it stays outside the body (radius 15
+# mm, root at 22.5 mm).  With 12 mm it reached into the solid sphere: the
+# wing cells there were cut by the body's patch voxels, and the fringe walk
+# from those holes ran through the wing cells next to the plate, which have
+# no donor (the background and body cells there are holes), turning most of
+# the mesh into holes
+COMPONENT = dict(sw.COMPONENT, rootMargin=6e-3)
+
 
 class textDict:
     """A dictionary given as text, written like a BlockMesh"""
@@ -81,11 +90,11 @@ def main(argv=None):
     args = ap.parse_args(argv)
 
     tilts = (-THETA_MAX, 0.0, THETA_MAX)
-    env = sw.sweptEnvelope(sw.COMPONENT, sw.BACKGROUND, tilts)
+    env = sw.sweptEnvelope(COMPONENT, sw.BACKGROUND, tilts)
     if args.list:
         for name in sphereMesh.LEVELS:
             lev = sw.LEVELS[name]
-            _, winfo = sw.wingComponent(lev, sw.COMPONENT)
+            _, winfo = sw.wingComponent(lev, COMPONENT)
             _, binfo = sw.backgroundMesh(lev, sw.BACKGROUND, env)
             _, sinfo = sphereMesh.blockMeshDict(name)
             print("%-9s wing %7d cells, body %6d cells, background h %.2f mm"
@@ -97,7 +106,7 @@ def main(argv=None):
 
     lev = sw.LEVELS[args.level]
     pose = (math.radians(args.phi), math.radians(args.alpha))
-    wbm, winfo = sw.wingComponent(lev, sw.COMPONENT, pose)
+    wbm, winfo = sw.wingComponent(lev, COMPONENT, pose)
     sw.checkBlockSides(wbm)
     bbm, binfo = sw.backgroundMesh(lev, sw.BACKGROUND, env)
     stext, sinfo = sphereMesh.blockMeshDict(args.level)

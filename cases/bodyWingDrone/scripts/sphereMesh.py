@@ -32,13 +32,17 @@ R1 = CBAR                   # body radius: one chord
 MARGIN = 0.8*CBAR           # body -> overset boundary, as the wing's [m]
 
 # n: cells along a cube edge (4 n around a great circle); nR: radial cells;
-# dsW: first cell at the body surface [m]
+# dsW: first cell at the body surface [m].  n = 6 at tiny (24 cells around)
+# made cells so wide that their boxes, in the stock hole test, met the wing
+# plate's voxels well inside the body shell; the wing component's fringe
+# next to them found no donor and the fringe walk then turned most of the
+# body and wing zones into holes (no donor anywhere near the plate)
 LEVELS = {
-    "tiny":     dict(n=6, nR=8, dsW=0.6e-3),
-    "coarse":   dict(n=10, nR=12, dsW=0.35e-3),
-    "medium":   dict(n=14, nR=16, dsW=0.25e-3),
-    "fine":     dict(n=20, nR=22, dsW=0.17e-3),
-    "finePlus": dict(n=24, nR=26, dsW=0.14e-3),
+    "tiny":     dict(n=10, nR=10, dsW=0.6e-3),
+    "coarse":   dict(n=14, nR=14, dsW=0.35e-3),
+    "medium":   dict(n=20, nR=18, dsW=0.25e-3),
+    "fine":     dict(n=28, nR=24, dsW=0.17e-3),
+    "finePlus": dict(n=34, nR=28, dsW=0.14e-3),
 }
 
 

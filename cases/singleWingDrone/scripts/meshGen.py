@@ -218,9 +218,12 @@ def offsetArc(t0, t1, d, n=4000):
     return geo.edgePoint(t) + d*geo.edgeNormal(t)
 
 
-def circleArc(c, r, a0, a1, n=400):
+def circleArc(c, r, a0, a1, n=400, ry=None):
+    """Arc of the circle (or, with ry, the ellipse of radii r along x and
+    ry along y) about c from angle a0 to a1."""
     a = np.linspace(a0, a1, n)
-    return np.stack([c[0] + r*np.cos(a), c[1] + r*np.sin(a)], axis=1)
+    ry = r if ry is None else ry
+    return np.stack([c[0] + r*np.cos(a), c[1] + ry*np.sin(a)], axis=1)
 
 
 def line(p0, p1, n=50):
@@ -366,6 +369,10 @@ def wingPlanform(comp):
     """Planform points (x, y) and curves of the wing component."""
     a, R0 = geo.A, geo.R0
     d = comp["margin"]
+    # root side (towards the flapping axis): its own margin if given (the
+    # body-wing drone keeps the component outside the body); the root
+    # corners are then quarter ellipses
+    dr = comp.get("rootMargin") or d
     f = comp["coreFrac"]
     tau2 = comp["tau2"]
 
@@ -396,10 +403,10 @@ def wingPlanform(comp):
     P["Q3"] = np.array([-P["Q2"][0], P["Q2"][1]])
 
     s2 = 1/math.sqrt(2)
-    P["OE0"] = P["E0"] + d*np.array([-s2, -s2])
-    P["OE5"] = P["E5"] + d*np.array([s2, -s2])
-    P["OQ0"] = np.array([-f*a, R0 - d])
-    P["OQ1"] = np.array([f*a, R0 - d])
+    P["OE0"] = P["E0"] + np.array([-d*s2, -dr*s2])
+    P["OE5"] = P["E5"] + np.array([d*s2, -dr*s2])
+    P["OQ0"] = np.array([-f*a, R0 - dr])
+    P["OQ1"] = np.array([f*a, R0 - dr])
     P["OP1"] = P["P1"] + d*n1
     P["OP2"] = P["P2"] + d*geo.edgeNormal(math.pi - tau2)
 
@@ -411,18 +418,18 @@ def wingPlanform(comp):
     C[("Q1", "Q2")] = core
     C[("Q0", "Q3")] = core*np.array([-1, 1])
     C[("OE0", "OP2")] = np.concatenate([
-        circleArc(P["E0"], d, 1.25*math.pi, math.pi),
+        circleArc(P["E0"], d, 1.25*math.pi, math.pi, ry=dr),
         offsetArc(math.pi, math.pi - tau2, d)[1:]])
     C[("OP2", "OP1")] = offsetArc(math.pi - tau2, tau2, d)
     C[("OE5", "OP1")] = np.concatenate([
-        circleArc(P["E5"], d, -0.25*math.pi, 0.0),
+        circleArc(P["E5"], d, -0.25*math.pi, 0.0, ry=dr),
         offsetArc(0.0, tau2, d)[1:]])
     C[("OE0", "OQ0")] = np.concatenate([
-        circleArc(P["E0"], d, 1.25*math.pi, 1.5*math.pi),
-        line(P["E0"] + [0, -d], P["OQ0"])[1:]])
+        circleArc(P["E0"], d, 1.25*math.pi, 1.5*math.pi, ry=dr),
+        line(P["E0"] + [0, -dr], P["OQ0"])[1:]])
     C[("OQ1", "OE5")] = np.concatenate([
-        line(P["OQ1"], P["E5"] + [0, -d])[:-1],
-        circleArc(P["E5"], d, 1.5*math.pi, 1.75*math.pi)])
+        line(P["OQ1"], P["E5"] + [0, -dr])[:-1],
+        circleArc(P["E5"], d, 1.5*math.pi, 1.75*math.pi, ry=dr)])
     for k, pts in C.items():
         for end, name in ((0, k[0]), (-1, k[1])):
             if np.linalg.norm(pts[end] - P[name]) > 1e-9:

@@ -60,6 +60,12 @@ Foam::cellCellStencils::octreeInverseDistance::orphanSetName
     "octreeInverseDistanceOrphans"
 );
 
+const Foam::word
+Foam::cellCellStencils::octreeInverseDistance::emptyStencilField
+(
+    "octreeInverseDistanceCellTypes"
+);
+
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -768,7 +774,6 @@ void Foam::cellCellStencils::octreeInverseDistance::findDonors
 Foam::labelList Foam::cellCellStencils::octreeInverseDistance::findOrphans
 (
     const labelUList& cellTypes,
-    const labelUList& prevCellTypes,
     const bitSet& isOversetPatchCell,
     const labelListList& stencil
 )
@@ -776,12 +781,10 @@ Foam::labelList Foam::cellCellStencils::octreeInverseDistance::findOrphans
     DynamicList<label> orphans;
     forAll(cellTypes, celli)
     {
-        const label prevType =
-            celli < prevCellTypes.size() ? prevCellTypes[celli] : CALCULATED;
-
         if
         (
-            needsDonor(cellTypes[celli], prevType, isOversetPatchCell[celli])
+            cellTypes[celli] != HOLE
+         && isOversetPatchCell[celli]
          && stencil[celli].empty()
         )
         {
@@ -948,24 +951,40 @@ bool Foam::cellCellStencils::octreeInverseDistance::createStencilOnePass
         {
             if (donorCellCells[slots[i]].empty())
             {
-                empty.append(acceptors[i]);
+                empty.append(i);
             }
         }
         const label nEmpty = returnReduce(empty.size(), sumOp<label>());
         if (nEmpty)
         {
             OStringStream where;
-            for (const label celli : empty)
+            for (const label i : empty)
             {
+                const label celli = acceptors[i];
                 where
                     << nl << "    cell " << celli << " zone "
                     << zoneID()[celli] << " at " << cc[celli];
+                if (slots[i] < nCells)
+                {
+                    where
+                        << ": donor " << slots[i] << " zone "
+                        << zoneID()[slots[i]] << " at " << cc[slots[i]];
+                }
             }
             WarningInFunction
                 << nEmpty << " interpolated cells have an empty stencil"
                 << " (their donor and its neighbours are holes) at time "
                 << mesh_.time().timeName() << "; on this rank:"
-                << where.str().c_str() << endl;
+                << where.str().c_str() << nl
+                << "    cell types written as field " << emptyStencilField
+                << endl;
+
+            tmp<volScalarField> types
+            (
+                createField(mesh_, emptyStencilField, cellTypes_)
+            );
+            types.ref().instance() = mesh_.time().timeName();
+            types().write();
         }
     }
 
@@ -1240,7 +1259,7 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
     //    calculated now
     const labelList orphans
     (
-        findOrphans(allCellTypes, cellTypes_, isOversetPatchCell, allStencil)
+        findOrphans(allCellTypes, isOversetPatchCell, allStencil)
     );
 
     forAll(allCellTypes, celli)
