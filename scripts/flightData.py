@@ -12,7 +12,9 @@ holds one (restarts append to it).
         the root attributes case, level, stencil, nRanks, decomposition,
         commit present (and equal to KEY=VALUE); with --rows exactly N rows;
         with --log, a solver log of a run that was killed: every step the
-        log shows completed (a later "Time =" line) has its row.
+        log shows completed (a later "Time =" line) has its row; with
+        --zero DATASET:i,j columns i, j exactly 0 in every row, with
+        --moving DATASET:i column i not 0 in the last row.
     flightData.py compare REF CASE [--tol T] [--datasets a,b] [--exclude timers]
         the same datasets and rows, time equal, every other dataset
         max |a - b| / max(max |REF column|, 1e-9 max |REF dataset|) <= T
@@ -111,6 +113,26 @@ def check(a):
                      % (name, ", ".join("%s=%s" % (k, attrs.get(k))
                                         for k in sorted(wanted)),
                         (" (wrong: %s)" % ", ".join(wrong)) if wrong else ""))
+    for spec, zero in [(x, True) for x in a.zero] + \
+            [(x, False) for x in a.moving]:
+        d, cols = spec.split(":")
+        cols = [int(c) for c in cols.split(",")]
+        v = np.asarray(data.get(d, np.zeros((0, 0))), dtype=float)
+        if v.ndim != 2 or v.shape[1] <= max(cols):
+            status |= report(False, "flightData %s: no columns %s of %s"
+                             % (name, cols, d))
+            continue
+        if zero:
+            worst = float(np.max(np.abs(v[:, cols])))
+            status |= report(worst == 0.0, "flightData %s: %s columns %s "
+                             "exactly 0 in every row (max |value| %g)"
+                             % (name, d, cols, worst))
+        else:
+            last = v[-1, cols]
+            status |= report(bool(np.all(last != 0.0)), "flightData %s: %s "
+                             "columns %s moving (last row %s)"
+                             % (name, d, cols, " ".join("%.3g" % x
+                                                        for x in last)))
     if a.log:
         # Steps the log started; each but the last was completed, and the
         # function object wrote its row before the next "Time =" line
@@ -191,6 +213,8 @@ def main():
     c.add_argument("--attr", action="append", default=[])
     c.add_argument("--log")
     c.add_argument("--variableStep", action="store_true")
+    c.add_argument("--zero", action="append", default=[])
+    c.add_argument("--moving", action="append", default=[])
     m = sub.add_parser("compare")
     m.add_argument("ref")
     m.add_argument("case")

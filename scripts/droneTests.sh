@@ -1,0 +1,102 @@
+#------------------------------------------------------------------------------
+# flapFoam: shell functions of the drone cases' Alltest scripts (sourced).
+# Each prints PASS/FAIL lines "PASS [label] ..." and sets status=1 on a
+# failure.  Needs: python (Debian's python3), root (the case folder, the
+# working directory), runs/ (the logs), checkRun (the single-wing drone's
+# scripts/checkRun.py).
+#------------------------------------------------------------------------------
+
+projectScripts="$(cd "${BASH_SOURCE[0]%/*}" && pwd -P)"
+
+# Allrun options: tight linear solvers (p, pFinal, U, UFinal tolerance
+# 1e-12, relTol 0: comparisons then measure what they compare, not the
+# solver tolerance), laminar flow (exact restarts, see the single-wing
+# drone's README)
+tight=()
+for s in p pFinal U UFinal
+do
+    tight+=(-set system/fvSolution "solvers/$s/tolerance" 1e-12
+            -set system/fvSolution "solvers/$s/relTol" 0)
+done
+laminar=(-set constant/turbulenceProperties simulationType laminar)
+checkRun="$projectScripts/../cases/singleWingDrone/scripts/checkRun.py"
+
+# run <label> <Allrun options...>: one line for the run (completed, no
+# orphan at any step when the case checks orphans) and the FAIL lines of
+# its checks
+run()
+{
+    local label="$1"
+    shift
+    local log="runs/log.Alltest.$label"
+    local t0=$SECONDS
+    ./Allrun "$@" > "$log" 2>&1
+    local rc=$?
+    local p f
+    p=$(grep -c '^PASS ' "$log")
+    f=$(grep -c '^FAIL ' "$log")
+    grep -E '^FAIL ' "$log" | sed -E "s/^FAIL /FAIL [$label] /"
+    if [ "$rc" -ne 0 ] || [ "$f" -gt 0 ] || \
+       { [ -f scripts/oversetCheck.py ] && [ "$p" -eq 0 ]; }
+    then
+        echo "FAIL [$label] ./Allrun $* exited $rc, $p orphan checks" \
+             "passed, $f failed (see $log)"
+        status=1
+    elif [ -f scripts/oversetCheck.py ]
+    then
+        echo "PASS [$label] run completed; no orphan at any of the $p" \
+             "written steps ($((SECONDS - t0)) s)"
+    else
+        echo "PASS [$label] run completed ($((SECONDS - t0)) s)"
+    fi
+}
+
+# result <label> <checkRun.py arguments...>
+result()
+{
+    local label="$1"
+    shift
+    "$python" "$checkRun" "$@" | sed -E "s/^(PASS|FAIL) /\1 [$label] /"
+    [ "${PIPESTATUS[0]}" -eq 0 ] || status=1
+}
+
+# flightData <label> <flightData.py arguments...>
+flightData()
+{
+    local label="$1"
+    shift
+    "$python" "$projectScripts/flightData.py" "$@" \
+        | sed -E "s/^(PASS|FAIL) /\1 [$label] /"
+    [ "${PIPESTATUS[0]}" -eq 0 ] || status=1
+}
+
+# vacuum <label> <run folder> <tol>: rigidBodySimulate on a copy of the
+# folder's dictionaries (a row per step) against its joints.dat
+vacuum()
+{
+    local label="$1" run="$2" tol="$3"
+    local rbs="$run-rigidBodySimulate"
+    rm -rf "$rbs"
+    mkdir -p "$rbs/constant"
+    cp -r "$run/system" "$rbs/"
+    cp "$run/constant/dynamicMeshDict" "$rbs/constant/"
+    local entry
+    for entry in "startFrom startTime" "writeControl timeStep" \
+                 "writeInterval 1"
+    do
+        set -- $entry
+        foamDictionary -entry "$1" -set "$2" "$rbs/system/controlDict" \
+            > /dev/null
+    done
+    if rigidBodySimulate -case "$rbs" > "$rbs/log.rigidBodySimulate" 2>&1
+    then
+        result "$label" --name rigidBodySimulate rbs "$run" "$rbs" \
+            --tol "$tol"
+    else
+        echo "FAIL [$label] rigidBodySimulate failed" \
+             "(see $rbs/log.rigidBodySimulate)"
+        status=1
+    fi
+}
+
+#------------------------------------------------------------------------------
