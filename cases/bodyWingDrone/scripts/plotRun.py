@@ -1,0 +1,172 @@
+#!/usr/bin/python3
+"""
+Plots of a body-wing drone run (Allrun calls it at the end of a run).
+
+    scripts/plotRun.py [-case DIR] [-o OUTDIR]
+
+Reads the run's flight data (postProcessing/flightData/<start>/
+flightData.h5, ../../../scripts/flightData.py) and writes, in OUTDIR
+(default DIR/plots):
+
+  trajectory.png         x-z path of the body's centre of mass [mm];
+  bodyPitch.png          body pitch theta = q_2 [deg] against t f;
+  forceCoefficients.png  C_xI, C_zI of the wing and of the body (global
+                         frame; the flightData coefficients: wing S = R cbar,
+                         body S = pi r^2, U_ref = 4 f A_phi R2) against t f,
+                         the wing's downstroke (qDot_3 < 0) shaded;
+  wingPitchingMoment.png the wing's pitching moment coefficient C_m =
+                         M_y/(0.5 rho S U_ref^2 cbar), M about the body's
+                         centre of mass, against t f;
+  prescribedJoints.png   q_3 (flapping) and q_4 (wing pitching), relative to
+                         the body, against the analytic Wang motion of the
+                         run's constant/dynamicMeshDict (wang entries);
+  stepTimers.png         the step-timer bar chart.
+
+The load of the row of t_k is the one used for the step to t_k, from the
+flow at t_{k-1}: it is plotted at t_{k-1} (the start row has none).
+Prints a summary.  Exit status non-zero if the data are missing.
+"""
+
+import argparse
+import os
+import subprocess
+import sys
+
+import numpy as np
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SCRIPTS = os.path.normpath(os.path.join(HERE, "..", "..", "..", "scripts"))
+sys.path.insert(0, SCRIPTS)
+sys.path.insert(0, os.path.join(HERE, "..", "..", "singleWingDrone",
+                                "scripts"))
+import flightData  # noqa: E402
+import plotRun as sw  # noqa: E402  (dictionary reader, Wang motion, shading)
+
+
+def save(fig, out, name):
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, name), dpi=120)
+    plt.close(fig)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[1])
+    ap.add_argument("-case", default=".")
+    ap.add_argument("-o", "--output", default=None)
+    a = ap.parse_args()
+    out = a.output or os.path.join(a.case, "plots")
+    os.makedirs(out, exist_ok=True)
+
+    if flightData.find(a.case) is None:
+        sys.exit("plotRun: no postProcessing/flightData/*/flightData.h5 in %s"
+                 % a.case)
+    attrs, d = flightData.load(a.case)
+    t = d["time"]
+    q, qDot = d["joints/q"], d["joints/qDot"]
+    meshDict = sw.readFoamDict(os.path.join(a.case, "constant",
+                                            "dynamicMeshDict"))
+    coeffs = meshDict.get("eABAMeshMotionCoeffs", meshDict)
+    wang = {int(e["joint"][0]): sw.wangMotion(e)
+            for e in coeffs.get("imposedMotion", {}).values()
+            if isinstance(e, dict) and e.get("type", [""])[0] == "wang"}
+    f = wang[3].frequency if 3 in wang else 20.0
+    tf = f*t
+
+    # (a) trajectory of the body
+    c = d["bodies/body/position"]
+    fig, ax = plt.subplots(figsize=(6, 5))
+    ax.plot(1e3*c[:, 0], 1e3*c[:, 2], "-")
+    ax.plot(1e3*c[0, 0], 1e3*c[0, 2], "o", label="t = %.4g s" % t[0])
+    ax.plot(1e3*c[-1, 0], 1e3*c[-1, 2], "s", label="t = %.4g s" % t[-1])
+    ax.set_xlabel("x [mm]")
+    ax.set_ylabel("z [mm]")
+    ax.set_title("Body-wing drone: path of the body's centre of mass")
+    ax.grid(True, alpha=0.3)
+    ax.legend()
+    save(fig, out, "trajectory.png")
+
+    # (b) body pitch
+    fig, ax = plt.subplots(figsize=(8, 4))
+    ax.plot(tf, np.degrees(q[:, 2]))
+    ax.set_xlabel("t f [cycles]")
+    ax.set_ylabel("theta = q_2 [deg]")
+    ax.set_title("Body pitch")
+    ax.grid(True, alpha=0.3)
+    save(fig, out, "bodyPitch.png")
+
+    # (c), (d) coefficients at the times of the flow they come from
+    tl = tf[:-1]
+    downstroke = qDot[:-1, 3] if q.shape[1] > 3 else np.zeros_like(tl)
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    sw.shadeDownstrokes(ax, tl, downstroke)
+    for body in ("wing", "body"):
+        C = d["coefficients/" + body][1:]
+        ax.plot(tl, C[:, 0], label="%s C_xI" % body)
+        ax.plot(tl, C[:, 1], label="%s C_zI" % body)
+    ax.axhline(0, color="k", lw=0.5)
+    ax.set_xlabel("t f [cycles]")
+    ax.set_ylabel("C = F / (0.5 rho S U_ref^2)")
+    ax.set_title("Force coefficients (global frame)")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8)
+    save(fig, out, "forceCoefficients.png")
+
+    Cm = d["coefficients/wing"][1:, 2]
+    fig, ax = plt.subplots(figsize=(8, 4))
+    sw.shadeDownstrokes(ax, tl, downstroke)
+    ax.plot(tl, Cm)
+    ax.axhline(0, color="k", lw=0.5)
+    ax.set_xlabel("t f [cycles]")
+    ax.set_ylabel("C_m (wing, about the body's centre of mass)")
+    ax.set_title("Wing pitching moment")
+    ax.grid(True, alpha=0.3)
+    save(fig, out, "wingPitchingMoment.png")
+
+    # (e) prescribed joints
+    worst = 0.0
+    fig, axes = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
+    for qi, ev in sorted(wang.items()):
+        exact, _, _ = ev(t)
+        axes[0].plot(tf, np.degrees(exact), "-", lw=1,
+                     label="q_%d analytic" % qi)
+        axes[0].plot(tf, np.degrees(q[:, qi]), ".", ms=3,
+                     markevery=max(1, len(t)//200), label="q_%d run" % qi)
+        err = np.abs(q[:, qi] - exact)
+        worst = max(worst, float(err.max())/ev.amplitude)
+        axes[1].semilogy(tf, np.maximum(err, 1e-18), label="q_%d" % qi)
+    axes[0].set_ylabel("angle [deg]")
+    axes[0].legend(fontsize=7)
+    axes[1].set_ylabel("|run - analytic| [rad]")
+    axes[1].set_xlabel("t f [cycles]")
+    for ax in axes:
+        ax.grid(True, alpha=0.3)
+    axes[0].set_title("Prescribed joints (relative to the body)")
+    save(fig, out, "prescribedJoints.png")
+
+    # (f) step timers
+    timers = os.path.join(a.case, "postProcessing", "stepTimers")
+    if os.path.isdir(timers):
+        rc = subprocess.call([sys.executable,
+                              os.path.join(SCRIPTS, "plotStepTimers.py"),
+                              timers, "-o", os.path.join(out,
+                                                         "stepTimers.png"),
+                              "-l", attrs.get("case", "")])
+        if rc != 0:
+            return rc
+
+    print("plotRun: %d steps, t = %.6g ... %.6g s; body at x = %.6g m, "
+          "z = %.6g m, theta = %.6g deg; prescribed joints: max |q - "
+          "analytic|/amplitude = %.3g" % (len(t) - 1, t[0], t[-1], c[-1, 0],
+                                         c[-1, 2], np.degrees(q[-1, 2]),
+                                         worst))
+    print("plotRun: wrote %s/{trajectory,bodyPitch,forceCoefficients,"
+          "wingPitchingMoment,prescribedJoints,stepTimers}.png" % out)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
