@@ -48,10 +48,6 @@ public:
         return id_;
     }
 
-    bool valid() const
-    {
-        return id_ >= 0;
-    }
 };
 
 
@@ -86,15 +82,10 @@ herr_t collectDatasets
 
 //- Open a file read-write (errors of the library silenced: ours name the
 //- file)
-hid_t openFile(const fileName& path, const bool readOnly = false)
+hid_t openFile(const fileName& path)
 {
     H5Eset_auto(H5E_DEFAULT, nullptr, nullptr);
-    return H5Fopen
-    (
-        path.c_str(),
-        readOnly ? H5F_ACC_RDONLY : H5F_ACC_RDWR,
-        H5P_DEFAULT
-    );
+    return H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
 }
 
 
@@ -359,17 +350,6 @@ void Foam::flightDataFile::append(const row& r)
     }
 
     ++nRows_;
-}
-
-
-Foam::label Foam::flightDataFile::countRows(const fileName& path)
-{
-    if (!isFile(path))
-    {
-        return 0;
-    }
-    handle file(openFile(path, true), H5Fclose);
-    return file.valid() ? readTimes(file, path).size() : 0;
 }
 
 

@@ -93,7 +93,7 @@ string firstLine(const std::string& command)
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 const Foam::eABAMeshMotion&
-Foam::functionObjects::flightData::motion() const
+Foam::functionObjects::flightData::findMotion() const
 {
     const HashTable<const eABAMeshMotion*> solvers
     (
@@ -225,7 +225,7 @@ Foam::functionObjects::flightData::attributes(const scalar startTime) const
 Foam::flightDataFile::row
 Foam::functionObjects::flightData::makeRow(const bool withLoads) const
 {
-    const eABAMeshMotion& m = motion();
+    const eABAMeshMotion& m = *motion_;
     const RBD::eABAMotion& model = m.model();
     const RBD::rigidBodyModelState& s = model.state();
     const scalar nan = std::numeric_limits<scalar>::quiet_NaN();
@@ -297,10 +297,8 @@ Foam::functionObjects::flightData::makeRow(const bool withLoads) const
         vector M(vector::uniform(nan));
         if (withLoads)
         {
-            const spatialVector& fx = m.load(bodyID);
-            const vector cM(m.centreOfMass(momentAbout_[i]));
-            F = fx.l();
-            M = fx.w() - (cM ^ F);
+            F = m.load(bodyID).l();
+            M = m.moment(bodyID, m.centreOfMass(momentAbout_[i]));
         }
         add(prefix + "force", xyz, components(F));
         add(prefix + "moment", xyz, components(M));
@@ -347,7 +345,8 @@ Foam::functionObjects::flightData::flightData
 )
 :
     fvMeshFunctionObject(name, runTime, dict),
-    Uref_(0)
+    Uref_(0),
+    motion_(nullptr)
 {
     read(dict);
 
@@ -388,7 +387,8 @@ bool Foam::functionObjects::flightData::read(const dictionary& dict)
             << "Uref " << Uref_ << ": must be positive" << exit(FatalIOError);
     }
 
-    const eABAMeshMotion& m = motion();
+    motion_ = &findMotion();
+    const eABAMeshMotion& m = *motion_;
     const wordList loaded(m.loadedBodies());
     const RBD::eABAMotion& model = m.model();
 

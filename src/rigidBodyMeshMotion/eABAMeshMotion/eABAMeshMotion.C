@@ -344,9 +344,9 @@ void Foam::eABAMeshMotion::writeOutput()
     os  << model_.state().t();
     for (const bodyMesh& bm : bodyMeshes_)
     {
-        const vector c(centreOfMass(model_.X0(bm.bodyID), bm.bodyID));
+        const vector c(centreOfMass(bm.bodyID));
         const vector& F = fx_[bm.bodyID].l();
-        const vector M(fx_[bm.bodyID].w() - (c ^ F));
+        const vector M(moment(bm.bodyID, c));
 
         os  << ' ' << c.x() << ' ' << c.y() << ' ' << c.z()
             << ' ' << F.x() << ' ' << F.y() << ' ' << F.z()

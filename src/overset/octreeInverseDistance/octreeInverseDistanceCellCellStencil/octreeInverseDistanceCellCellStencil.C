@@ -514,6 +514,28 @@ Foam::cellCellStencils::octreeInverseDistance::blockDivisions
 }
 
 
+Foam::treeBoundBox
+Foam::cellCellStencils::octreeInverseDistance::voxelRangeBox
+(
+    const boundBox& bb,
+    const labelVector& nDivs,
+    const labelVector& lo,
+    const labelVector& hi
+)
+{
+    const vector span(bb.span());
+    const vector h
+    (
+        span.x()/nDivs.x(), span.y()/nDivs.y(), span.z()/nDivs.z()
+    );
+    return treeBoundBox
+    (
+        bb.min() + vector(lo.x()*h.x(), lo.y()*h.y(), lo.z()*h.z()),
+        bb.min() + vector(hi.x()*h.x(), hi.y()*h.y(), hi.z()*h.z())
+    );
+}
+
+
 bool Foam::cellCellStencils::octreeInverseDistance::rangesMeet
 (
     const labelVector& lo,
@@ -577,7 +599,10 @@ void Foam::cellCellStencils::octreeInverseDistance::clearVoxels
                 }
             }
         }
-        patchBlocks_[zonei] = 0u;
+        for (const label blocki : patchBlockList_[zonei])
+        {
+            patchBlocks_[zonei].unset(blocki);
+        }
     }
     else
     {
@@ -1240,16 +1265,19 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
             allDonorID
         );
     }
-    searchDonors
-    (
-        donorCandidates(allCellTypes, isOversetPatchCell),
-        incremental,
-        globalCells,
-        holeTypes,
-        allStencil,
-        allDonorID,
-        queried
-    );
+    if (incremental || parallel)
+    {
+        searchDonors
+        (
+            donorCandidates(allCellTypes, isOversetPatchCell),
+            incremental,
+            globalCells,
+            holeTypes,
+            allStencil,
+            allDonorID,
+            queried
+        );
+    }
 
     lap("Donors");
 

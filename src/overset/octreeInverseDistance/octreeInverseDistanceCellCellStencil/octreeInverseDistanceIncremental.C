@@ -137,11 +137,6 @@ Foam::cellCellStencils::octreeInverseDistance::holeCandidates
         Foam::sqrt(3.0)*(m + cmptMax(cmptMag(smallVec_))) + m
       + 1e-9*mag(bb.span());
 
-    const vector span(bb.span());
-    const vector h
-    (
-        span.x()/nDivs.x(), span.y()/nDivs.y(), span.z()/nDivs.z()
-    );
     const labelVector nBlocks(blockDivisions(nDivs));
 
     bitSet isCandidate(nCells);
@@ -151,21 +146,12 @@ Foam::cellCellStencils::octreeInverseDistance::holeCandidates
         const labelVector b(index3(nBlocks, blocki));
         const labelVector v0(b*voxelBlock);
         const labelVector v1(min(nDivs, (b + labelVector::one)*voxelBlock));
-        treeBoundBox blockBb
-        (
-            bb.min() + vector(v0.x()*h.x(), v0.y()*h.y(), v0.z()*h.z()),
-            bb.min() + vector(v1.x()*h.x(), v1.y()*h.y(), v1.z()*h.z())
-        );
+        treeBoundBox blockBb(voxelRangeBox(bb, nDivs, v0, v1));
         blockBb.min() -= vector::uniform(grow);
         blockBb.max() += vector::uniform(grow);
 
         // Its box in the zone's frame, and the bins there
-        const tmp<pointField> tcorners(blockBb.points());
-        treeBoundBox bb0(treeBoundBox::invertedBox);
-        for (const point& p : tcorners())
-        {
-            bb0.add(search.toReference(p));
-        }
+        const treeBoundBox bb0(search.toReference(blockBb));
         if (!bb0.overlaps(binBb))
         {
             continue;

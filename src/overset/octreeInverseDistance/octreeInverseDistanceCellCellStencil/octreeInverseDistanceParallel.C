@@ -17,29 +17,6 @@ Description
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::treeBoundBox Foam::cellCellStencils::octreeInverseDistance::currentBox
-(
-    const label zonei,
-    const label proci
-) const
-{
-    const treeBoundBox& bb0 = procBb_[zonei][proci];
-    if (bb0.empty())
-    {
-        return bb0;
-    }
-
-    const zoneDonorSearch& search = zoneSearch_[zonei];
-    const tmp<pointField> tcorners(bb0.points());
-    treeBoundBox bb(treeBoundBox::invertedBox);
-    for (const point& p0 : tcorners())
-    {
-        bb.add(search.toCurrent(p0));
-    }
-    return bb;
-}
-
-
 void Foam::cellCellStencils::octreeInverseDistance::collectPatchVoxels
 (
     const label zonei,
@@ -97,7 +74,7 @@ void Foam::cellCellStencils::octreeInverseDistance::exchangePatchVoxels
     const label nZones = zoneSearch_.size();
     const label myProci = Pstream::myProcNo();
 
-    // Clear last step's remote voxels
+    // Clear last step's remote voxels and their blocks
     for (label zonei = 0; zonei < nZones; ++zonei)
     {
         if (remoteParts_.set(zonei))
@@ -106,7 +83,10 @@ void Foam::cellCellStencils::octreeInverseDistance::exchangePatchVoxels
             {
                 remoteParts_[zonei].set(v, patchCellType::OTHER);
             }
-            remoteBlocks_[zonei] = 0u;
+            for (const label blocki : remoteBlockList_[zonei])
+            {
+                remoteBlocks_[zonei].unset(blocki);
+            }
         }
         remoteSet_[zonei].clear();
         remoteBlockList_[zonei].clear();
@@ -141,7 +121,12 @@ void Foam::cellCellStencils::octreeInverseDistance::exchangePatchVoxels
             {
                 if (tgti != zonei)
                 {
-                    treeBoundBox bb(currentBox(tgti, proci));
+                    // The cached box of that rank's part, at the current
+                    // pose
+                    treeBoundBox bb
+                    (
+                        zoneSearch_[tgti].toCurrent(procBb_[tgti][proci])
+                    );
                     if (!bb.empty())
                     {
                         bb.min() -= smallVec_;
@@ -157,22 +142,15 @@ void Foam::cellCellStencils::octreeInverseDistance::exchangePatchVoxels
 
             const boundBox& bb = patchBb[zonei][0];
             const labelVector& nDivs = patchDivisions[zonei];
-            const vector span(bb.span());
-            const vector h
-            (
-                span.x()/nDivs.x(), span.y()/nDivs.y(), span.z()/nDivs.z()
-            );
 
             DynamicList<label> sendVoxels;
             for (const label v : voxels)
             {
                 const labelVector ijk(index3(nDivs, v));
-                const point lo
+                treeBoundBox voxelBb
                 (
-                    bb.min()
-                  + vector(ijk.x()*h.x(), ijk.y()*h.y(), ijk.z()*h.z())
+                    voxelRangeBox(bb, nDivs, ijk, ijk + labelVector::one)
                 );
-                boundBox voxelBb(lo, lo + h);
                 // Round-off of index3 at the voxel faces
                 voxelBb.inflate(1e-6);
 

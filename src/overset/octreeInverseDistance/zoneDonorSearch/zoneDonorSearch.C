@@ -197,6 +197,44 @@ Foam::scalar Foam::zoneDonorSearch::fitTransform
 }
 
 
+Foam::treeBoundBox Foam::zoneDonorSearch::toReference
+(
+    const treeBoundBox& bb
+) const
+{
+    if (bb.empty())
+    {
+        return bb;
+    }
+    const tmp<pointField> tcorners(bb.points());
+    treeBoundBox bb0(treeBoundBox::invertedBox);
+    for (const point& p : tcorners())
+    {
+        bb0.add(toReference(p));
+    }
+    return bb0;
+}
+
+
+Foam::treeBoundBox Foam::zoneDonorSearch::toCurrent
+(
+    const treeBoundBox& bb0
+) const
+{
+    if (bb0.empty())
+    {
+        return bb0;
+    }
+    const tmp<pointField> tcorners(bb0.points());
+    treeBoundBox bb(treeBoundBox::invertedBox);
+    for (const point& p0 : tcorners())
+    {
+        bb.add(toCurrent(p0));
+    }
+    return bb;
+}
+
+
 void Foam::zoneDonorSearch::setTransform(const tensor& R, const vector& t)
 {
     R_ = R;
