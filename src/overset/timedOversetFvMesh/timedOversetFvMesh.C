@@ -4,6 +4,8 @@
 
 #include "timedOversetFvMesh.H"
 #include "addToRunTimeSelectionTable.H"
+#include "volFields.H"
+#include "coupledFvPatchField.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -53,6 +55,23 @@ void Foam::timedOversetFvMesh::timedInterpolate(Field<Type>& psi) const
     {
         stepTimers::scope timer(timers_, pimpleInterpolatePart);
         dynamicOversetFvMesh::interpolate(psi);
+    }
+}
+
+
+template<class GeoField>
+void Foam::timedOversetFvMesh::correctCoupledPatches()
+{
+    typedef typename GeoField::value_type Type;
+
+    for (const word& name : this->sortedNames<GeoField>())
+    {
+        GeoField& fld = this->lookupObjectRef<GeoField>(name);
+        correctBoundaryConditions<GeoField, coupledFvPatchField<Type>>
+        (
+            fld.boundaryFieldRef(),
+            true
+        );
     }
 }
 
@@ -130,6 +149,14 @@ bool Foam::timedOversetFvMesh::update()
         {
             stepTimers::scope timer(timers_, interpolatePart);
             interpolateFields();
+            if (Pstream::parRun())
+            {
+                correctCoupledPatches<volScalarField>();
+                correctCoupledPatches<volVectorField>();
+                correctCoupledPatches<volSphericalTensorField>();
+                correctCoupledPatches<volSymmTensorField>();
+                correctCoupledPatches<volTensorField>();
+            }
         }
     }
 
