@@ -1,14 +1,15 @@
 #!/usr/bin/python3
 """
-Compare the multibody motion of two single-wing drone runs (eABAMeshMotion)
-that differ only in the overset stencil: the wing force of bodies.dat and
+Compare the multibody motion of two drone runs (eABAMeshMotion) that
+differ only in the overset stencil: each body's force of bodies.dat and
 the trajectory of joints.dat, rows matched by time (the readers of
 cases/singleWingDrone/scripts/checkRun.py and plotRun.py).
 
 Usage: compareMotion.py REF CASE [-forceTol 0.005] [-qTol 1e-4]
-                        [-columns q_0,qDot_0,q_1,qDot_1] [-body wing]
+                        [-columns q_0,qDot_0,q_1,qDot_1] [-bodies wing]
 
-  force: max over the rows and components of |F_CASE - F_REF| / max|F_REF|
+  force (each body of the comma-separated -bodies): max over the rows and
+         components of |F_CASE - F_REF| / max|F_REF|
          (max of |F| over the rows of the reference run); PASS if <= forceTol,
          each component reported.
   trajectory: checkRun.py's relative difference |a - b| / max(|a|, |b|,
@@ -46,29 +47,31 @@ def main():
     ap.add_argument("-forceTol", type=float, default=0.005)
     ap.add_argument("-qTol", type=float, default=1e-4)
     ap.add_argument("-columns", default="q_0,qDot_0,q_1,qDot_1")
-    ap.add_argument("-body", default="wing")
+    ap.add_argument("-bodies", default="wing")
     a = ap.parse_args()
     name = os.path.basename(os.path.normpath(a.case))
     refName = os.path.basename(os.path.normpath(a.ref))
     status = 0
 
-    # Wing force
+    # Forces
     ca, A = bodies(a.ref)
     cb, B = bodies(a.case)
     ia, ib = checkRun.matchRows(A, B)
-    if len(ia) == 0 or len(ia) != len(A) or len(ib) != len(B):
-        status |= checkRun.report(
-            False, "%s force" % name,
-            "rows at different times (%d common, %d and %d rows)"
-            % (len(ia), len(A), len(B)))
-    else:
-        comps = ["%s:F%s" % (a.body, c) for c in "xyz"]
+    for body in a.bodies.split(","):
+        check = "%s %s force" % (name, body)
+        if len(ia) == 0 or len(ia) != len(A) or len(ib) != len(B):
+            status |= checkRun.report(
+                False, check,
+                "rows at different times (%d common, %d and %d rows)"
+                % (len(ia), len(A), len(B)))
+            continue
+        comps = ["%s:F%s" % (body, c) for c in "xyz"]
         FA = A[:, [ca.index(c) for c in comps]]
         FB = B[:, [cb.index(c) for c in comps]]
         scale = float(np.linalg.norm(FA, axis=1).max()) + 1e-300
         rel = np.abs(FA[ia] - FB[ib]).max(axis=0)/scale
         status |= checkRun.report(
-            float(rel.max()) <= a.forceTol, "%s force" % name,
+            float(rel.max()) <= a.forceTol, check,
             "vs %s, %d rows: max |dF|/max|F| %.2e (tol %g): %s "
             "(max|F| %.4g N)"
             % (refName, len(ia), rel.max(), a.forceTol,

@@ -1386,7 +1386,8 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
         {
             const zoneDonorSearch& s = zoneSearch_[zonei];
             Info<< indent << "donor zone " << zonei
-                << " : walk " << returnReduce(s.nWalk(), sumOp<label>())
+                << " : rigid fit residual " << zoneResidual_[zonei]
+                << " walk " << returnReduce(s.nWalk(), sumOp<label>())
                 << " octree " << returnReduce(s.nOctree(), sumOp<label>())
                 << " outside " << returnReduce(s.nOutside(), sumOp<label>())
                 << nl;
