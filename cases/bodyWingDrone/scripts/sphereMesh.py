@@ -130,13 +130,13 @@ def blockMeshDict(level):
 # 2.4 % apart).  A sphere is a sphere: the turn only moves the seams.
 TURN_AXIS = (1.0, 2.0, 3.0)
 TURN_ANGLE = 0.3            # [rad]
+_K = tuple(a/math.sqrt(sum(b*b for b in TURN_AXIS)) for a in TURN_AXIS)
+_COS, _SIN = math.cos(TURN_ANGLE), math.sin(TURN_ANGLE)
 
 
 def turn(v):
     """v rotated by TURN_ANGLE about TURN_AXIS (Rodrigues)."""
-    n = math.sqrt(sum(a*a for a in TURN_AXIS))
-    k = tuple(a/n for a in TURN_AXIS)
-    c, s = math.cos(TURN_ANGLE), math.sin(TURN_ANGLE)
+    k, c, s = _K, _COS, _SIN
     kv = sum(a*b for a, b in zip(k, v))
     kxv = (k[1]*v[2] - k[2]*v[1], k[2]*v[0] - k[0]*v[2],
            k[0]*v[1] - k[1]*v[0])
