@@ -1,0 +1,164 @@
+/*---------------------------------------------------------------------------*\
+  flapFoam: free-flight simulation of flapping-wing drones on OpenFOAM v1912
+-------------------------------------------------------------------------------
+Application
+    oversetMotionCheck
+
+Group
+    grpFlapFoamUtilities
+
+Description
+    Moves an overset mesh through its motion (constant/dynamicMeshDict) from
+    the start time to the end time of system/controlDict, with no flow
+    solution, and checks the overset assembly at every time step: per zone
+    the calculated, interpolated and hole cells, and the interpolated cells
+    left with an empty donor stencil.  A mesh layout that only works at
+    some poses shows here in minutes instead of hours into a run: acceptors
+    without donors turn into holes and the fringe walk of the stencil
+    carries the holes through a zone (a "hole cascade").
+
+    Fails (exit 1) at the first step where a zone's holes exceed
+    -maxHoleFraction of its cells (default 0.25) or an interpolated cell
+    has no donor; the last line says which.  Writes the mesh and cellTypes
+    at the write times of system/controlDict (to look at the poses).
+
+    The motion is the one the solver would compute with no fluid load: for
+    eABAMeshMotion set fluidLoad off in its coefficients (the drone cases'
+    Allrun does that with -motionOnly).
+
+Usage
+    \b oversetMotionCheck [-maxHoleFraction F] [-parallel]
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "Time.H"
+#include "dynamicFvMesh.H"
+#include "cellCellStencilObject.H"
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Move an overset mesh through its motion with no flow solution and"
+        " check the overset assembly (holes per zone, acceptors without"
+        " donors) at every time step"
+    );
+    argList::noFunctionObjects();
+    argList::addOption
+    (
+        "maxHoleFraction",
+        "F",
+        "fail when the holes of a zone exceed this fraction of its cells"
+        " (default 0.25)"
+    );
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createDynamicFvMesh.H"
+
+    const scalar maxHoleFraction =
+        args.getOrDefault<scalar>("maxHoleFraction", 0.25);
+    if (maxHoleFraction <= 0 || maxHoleFraction > 1)
+    {
+        FatalErrorInFunction
+            << "-maxHoleFraction " << maxHoleFraction
+            << ": a fraction in (0, 1] is allowed" << exit(FatalError);
+    }
+
+    const labelIOList& zoneID = cellCellStencil::zoneID(mesh);
+    const label nZones = returnReduce(max(zoneID) + 1, maxOp<label>());
+
+    labelList zoneCells(nZones, Zero);
+    forAll(zoneID, celli)
+    {
+        ++zoneCells[zoneID[celli]];
+    }
+    Pstream::listCombineGather(zoneCells, plusEqOp<label>());
+    Pstream::listCombineScatter(zoneCells);
+    Info<< "Zones (cells): " << zoneCells << nl << endl;
+
+    labelList maxHoles(nZones, Zero);
+    label nSteps = 0;
+    bool failed = false;
+
+    while (!failed && runTime.run())
+    {
+        ++runTime;
+        mesh.update();
+        ++nSteps;
+
+        const cellCellStencilObject& overlap = Stencil::New(mesh);
+        const labelUList& types = overlap.cellTypes();
+        const labelListList& stencil = overlap.cellStencil();
+
+        labelList nInterp(nZones, Zero);
+        labelList nHoles(nZones, Zero);
+        label nOrphans = 0;
+        forAll(types, celli)
+        {
+            if (types[celli] == cellCellStencil::INTERPOLATED)
+            {
+                ++nInterp[zoneID[celli]];
+                if (stencil[celli].empty())
+                {
+                    ++nOrphans;
+                }
+            }
+            else if (types[celli] == cellCellStencil::HOLE)
+            {
+                ++nHoles[zoneID[celli]];
+            }
+        }
+        Pstream::listCombineGather(nInterp, plusEqOp<label>());
+        Pstream::listCombineScatter(nInterp);
+        Pstream::listCombineGather(nHoles, plusEqOp<label>());
+        Pstream::listCombineScatter(nHoles);
+        reduce(nOrphans, sumOp<label>());
+
+        Info<< "Time = " << runTime.timeName()
+            << " interpolated " << nInterp
+            << " holes " << nHoles
+            << " no-donor " << nOrphans << endl;
+
+        forAll(nHoles, zonei)
+        {
+            maxHoles[zonei] = max(maxHoles[zonei], nHoles[zonei]);
+            if (nHoles[zonei] > maxHoleFraction*zoneCells[zonei])
+            {
+                Info<< "oversetMotionCheck: FAILED at time "
+                    << runTime.timeName() << ": zone " << zonei << " has "
+                    << nHoles[zonei] << " holes of " << zoneCells[zonei]
+                    << " cells (more than -maxHoleFraction "
+                    << maxHoleFraction << ")" << endl;
+                failed = true;
+            }
+        }
+        if (nOrphans)
+        {
+            Info<< "oversetMotionCheck: FAILED at time "
+                << runTime.timeName() << ": " << nOrphans
+                << " interpolated cells without donors" << endl;
+            failed = true;
+        }
+
+        runTime.write();
+    }
+
+    Info<< nl << "Steps: " << nSteps << ", largest holes per zone: "
+        << maxHoles << " of " << zoneCells << " cells" << nl;
+    if (!failed)
+    {
+        Info<< "oversetMotionCheck: OK" << nl;
+    }
+    Info<< nl << "End" << nl << endl;
+
+    return failed ? 1 : 0;
+}
+
+
+// ************************************************************************* //
