@@ -20,7 +20,8 @@ Description
     Fails (exit 1) at the first step where a zone's holes exceed
     -maxHoleFraction of its cells (default 0.25) or an interpolated cell
     has no donor; the last line says which.  Writes the mesh and cellTypes
-    at the write times of system/controlDict (to look at the poses).
+    at the write times of system/controlDict and at the failing step (to
+    look at the poses).
 
     The motion is the one the solver would compute with no fluid load: for
     eABAMeshMotion set fluidLoad off in its coefficients (the drone cases'
@@ -146,7 +147,14 @@ int main(int argc, char *argv[])
             failed = true;
         }
 
-        runTime.write();
+        if (failed)
+        {
+            runTime.writeNow();
+        }
+        else
+        {
+            runTime.write();
+        }
     }
 
     Info<< nl << "Steps: " << nSteps << ", largest holes per zone: "

@@ -200,6 +200,55 @@ void Foam::cellCellStencils::octreeInverseDistance::readSettings()
             << " out of range: every component must be >= 1"
             << exit(FatalIOError);
     }
+
+    noHoleCut_.clear();
+    if (dict_.readIfPresent("noHoleCut", noHoleCut_))
+    {
+        const labelIOList& zoneID = this->zoneID();
+        const label nZones =
+            returnReduce(zoneID.empty() ? 0 : max(zoneID) + 1, maxOp<label>());
+        for (const labelPair& p : noHoleCut_)
+        {
+            if
+            (
+                p.first() < 0 || p.first() >= nZones
+             || p.second() < 0 || p.second() >= nZones
+             || p.first() == p.second()
+            )
+            {
+                FatalIOErrorInFunction(dict_)
+                    << "noHoleCut entry " << p << ": a pair (zone cutter) of"
+                    << " two different zones, each in [0, " << nZones - 1
+                    << "] (the zoneID values)" << exit(FatalIOError);
+            }
+        }
+        if (noHoleCut_.size() && search_ != searchType::cached)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "noHoleCut " << noHoleCut_ << " needs search "
+                << searchTypeNames[searchType::cached]
+                << " (search " << searchTypeNames[search_]
+                << " is the stock update, which cuts every pair)"
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+bool Foam::cellCellStencils::octreeInverseDistance::cuts
+(
+    const label cutter,
+    const label zone
+) const
+{
+    for (const labelPair& p : noHoleCut_)
+    {
+        if (p.first() == zone && p.second() == cutter)
+        {
+            return false;
+        }
+    }
+    return true;
 }
 
 
@@ -1214,6 +1263,10 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
             for (const label s : {srcI, tgtI})
             {
                 const label t = (s == srcI ? tgtI : srcI);
+                if (!cuts(s, t))
+                {
+                    continue;
+                }
                 markHoles
                 (
                     s, t, patchBb, patchDivisions,
@@ -1426,6 +1479,7 @@ Foam::cellCellStencils::octreeInverseDistance::octreeInverseDistance
     searchBox_(),
     useDivisions_(false),
     divisions_(Zero),
+    noHoleCut_(),
     zoneParts_(),
     zoneSearch_(),
     prevDonor_(),
