@@ -51,6 +51,33 @@ run()
     fi
 }
 
+# motionCycle <label> <run folder> [Allrun options...]: a whole flapping
+# cycle of the mesh motion without flow (Allrun -motionOnly, tiny mesh):
+# the overset assembly at every step (oversetMotionCheck: no zone with more
+# than 25 % holes, no acceptor without donors)
+motionCycle()
+{
+    local label="$1" dir="$2"
+    shift 2
+    local log="runs/log.Alltest.$label"
+    local t0=$SECONDS
+    ./Allrun -clean -level tiny -motionOnly -noMeshCheck -case "$dir" "$@" \
+        > "$log" 2>&1
+    local rc=$?
+    local steps
+    steps=$(grep -h '^Steps: ' "$dir/log.oversetMotionCheck" 2>/dev/null)
+    if [ "$rc" -eq 0 ] && grep -q '^oversetMotionCheck: OK' "$log"
+    then
+        echo "PASS [$label] a whole cycle of the mesh motion: $steps" \
+             "($((SECONDS - t0)) s)"
+    else
+        echo "FAIL [$label] ./Allrun -motionOnly exited $rc:" \
+             "$(grep -h '^oversetMotionCheck: FAILED' "$log" | head -1)" \
+             "(see $log)"
+        status=1
+    fi
+}
+
 # result <label> <checkRun.py arguments...>
 result()
 {

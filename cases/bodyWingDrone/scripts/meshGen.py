@@ -47,14 +47,24 @@ import sphereMesh  # noqa: E402
 # Body pitch the refined region allows for (the stroke plane tilts with it)
 THETA_MAX = math.radians(20)
 
-# The wing component of the single-wing drone, its root side 6 mm from the
-# root (instead of 0.8 cbar = 12 mm): it stays outside the body (radius 15
-# mm, root at 22.5 mm).  With 12 mm it reached into the solid sphere: the
-# wing cells there were cut by the body's patch voxels, and the fringe walk
-# from those holes ran through the wing cells next to the plate, which have
-# no donor (the background and body cells there are holes), turning most of
-# the mesh into holes
-COMPONENT = dict(sw.COMPONENT, rootMargin=6e-3)
+# The wing component of the single-wing drone (its margin at each level),
+# its root side 7 mm from the root: 0.5 mm off the body (radius 15 mm, root
+# at 22.5 mm), never inside it, so that the body's walls need not cut it
+# (system/fvSchemes: noHoleCut ((2 1))).  Checked over a whole cycle with
+# Allrun -motionOnly.  The layouts that failed there, all with the stock
+# hole cutting of every pair of zones:
+#  - root side 12 mm from the root (inside the sphere): the sphere's voxels
+#    cut the wing cells near the root, the fringe walk from those holes ran
+#    through the wing cells next to the plate, which have no donor (the
+#    background and body cells there are holes);
+#  - 6 mm (and 4.5 or 5 mm with 0.55 mm voxels): the sphere's voxels still
+#    cut the big outer wing cells of the root side at some poses; the body
+#    cells next to the plate's holes then found no donor (t = 0.00125 s);
+#  - 6 mm without the sphere cutting the wing (noHoleCut): the voxels of
+#    the plate's root faces (their boxes, when pitched, reach 2 mm inboard)
+#    cut the body cells where the wing's root side takes its donors, at
+#    t = 0.0185 s; 7 mm and 2 mm body cells there (sphereMesh.py) pass
+COMPONENT = dict(sw.COMPONENT, rootMargin=7e-3)
 
 
 class textDict:
@@ -90,12 +100,14 @@ def main(argv=None):
     args = ap.parse_args(argv)
 
     tilts = (-THETA_MAX, 0.0, THETA_MAX)
-    env = sw.sweptEnvelope(COMPONENT, sw.BACKGROUND, tilts)
     if args.list:
         for name in sphereMesh.LEVELS:
             lev = sw.LEVELS[name]
-            _, winfo = sw.wingComponent(lev, COMPONENT)
-            _, binfo = sw.backgroundMesh(lev, sw.BACKGROUND, env)
+            comp = sw.levelComponent(COMPONENT, lev)
+            _, winfo = sw.wingComponent(lev, comp)
+            _, binfo = sw.backgroundMesh(
+                lev, sw.BACKGROUND,
+                sw.sweptEnvelope(comp, sw.BACKGROUND, tilts))
             _, sinfo = sphereMesh.blockMeshDict(name)
             print("%-9s wing %7d cells, body %6d cells, background h %.2f mm"
                   % (name, winfo["cellsPlanned"], sinfo["cells"],
@@ -105,8 +117,10 @@ def main(argv=None):
         ap.error("level required")
 
     lev = sw.LEVELS[args.level]
+    comp = sw.levelComponent(COMPONENT, lev)
+    env = sw.sweptEnvelope(comp, sw.BACKGROUND, tilts)
     pose = (math.radians(args.phi), math.radians(args.alpha))
-    wbm, winfo = sw.wingComponent(lev, COMPONENT, pose)
+    wbm, winfo = sw.wingComponent(lev, comp, pose)
     sw.checkBlockSides(wbm)
     bbm, binfo = sw.backgroundMesh(lev, sw.BACKGROUND, env)
     stext, sinfo = sphereMesh.blockMeshDict(args.level)

@@ -36,9 +36,11 @@ MARGIN = 0.8*CBAR           # body -> overset boundary, as the wing's [m]
 # made cells so wide that their boxes, in the stock hole test, met the wing
 # plate's voxels well inside the body shell; the wing component's fringe
 # next to them found no donor and the fringe walk then turned most of the
-# body and wing zones into holes (no donor anywhere near the plate)
+# body and wing zones into holes (no donor anywhere near the plate); n = 10,
+# nR = 10 (3 mm cells at the wing root) failed at t = 0.0185 s of a cycle
+# (Allrun -motionOnly): see meshGen.py's COMPONENT
 LEVELS = {
-    "tiny":     dict(n=10, nR=10, dsW=0.6e-3),
+    "tiny":     dict(n=14, nR=12, dsW=0.6e-3),
     "coarse":   dict(n=14, nR=14, dsW=0.35e-3),
     "medium":   dict(n=20, nR=18, dsW=0.25e-3),
     "fine":     dict(n=28, nR=24, dsW=0.17e-3),
