@@ -74,13 +74,19 @@ int main(int argc, char *argv[])
     const labelIOList& zoneID = cellCellStencil::zoneID(mesh);
     const label nZones = returnReduce(max(zoneID) + 1, maxOp<label>());
 
+    // Per-zone counts summed over the ranks
+    auto sumOverRanks = [](labelList& counts)
+    {
+        Pstream::listCombineGather(counts, plusEqOp<label>());
+        Pstream::listCombineScatter(counts);
+    };
+
     labelList zoneCells(nZones, Zero);
     forAll(zoneID, celli)
     {
         ++zoneCells[zoneID[celli]];
     }
-    Pstream::listCombineGather(zoneCells, plusEqOp<label>());
-    Pstream::listCombineScatter(zoneCells);
+    sumOverRanks(zoneCells);
     Info<< "Zones (cells): " << zoneCells << nl << endl;
 
     labelList maxHoles(nZones, Zero);
@@ -115,10 +121,8 @@ int main(int argc, char *argv[])
                 ++nHoles[zoneID[celli]];
             }
         }
-        Pstream::listCombineGather(nInterp, plusEqOp<label>());
-        Pstream::listCombineScatter(nInterp);
-        Pstream::listCombineGather(nHoles, plusEqOp<label>());
-        Pstream::listCombineScatter(nHoles);
+        sumOverRanks(nInterp);
+        sumOverRanks(nHoles);
         reduce(nOrphans, sumOp<label>());
 
         Info<< "Time = " << runTime.timeName()

@@ -204,9 +204,7 @@ void Foam::cellCellStencils::octreeInverseDistance::readSettings()
     noHoleCut_.clear();
     if (dict_.readIfPresent("noHoleCut", noHoleCut_))
     {
-        const labelIOList& zoneID = this->zoneID();
-        const label nZones =
-            returnReduce(zoneID.empty() ? 0 : max(zoneID) + 1, maxOp<label>());
+        const label nZones = countZones(this->zoneID());
         for (const labelPair& p : noHoleCut_)
         {
             if
@@ -232,6 +230,19 @@ void Foam::cellCellStencils::octreeInverseDistance::readSettings()
                 << exit(FatalIOError);
         }
     }
+}
+
+
+Foam::label Foam::cellCellStencils::octreeInverseDistance::countZones
+(
+    const labelUList& zoneID
+)
+{
+    return returnReduce
+    (
+        zoneID.size() ? max(zoneID) + 1 : 0,
+        maxOp<label>()
+    );
 }
 
 
@@ -319,11 +330,7 @@ void Foam::cellCellStencils::octreeInverseDistance::buildCache
     const labelList& zoneID
 )
 {
-    const label nZones = returnReduce
-    (
-        zoneID.size() ? max(zoneID) + 1 : 0,
-        maxOp<label>()
-    );
+    const label nZones = countZones(zoneID);
 
     zoneSearch_.clear();
     zoneParts_.clear();
