@@ -1,4 +1,7 @@
 #!/usr/bin/python3
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
 """Read and check the flight data (HDF5) of a drone run.
 
 A run's file is postProcessing/flightData/<start>/flightData.h5 (the

@@ -1,4 +1,7 @@
 #!/usr/bin/python3
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
 """Bar chart of where each time step's wall-clock time goes (stepTimers).
 
     scripts/plotStepTimers.py [options] INPUT [INPUT ...]

@@ -1,4 +1,7 @@
 #!/usr/bin/python3
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
 """Run a command and report the peak memory of the solver processes it starts.
 
     bench/overset/peakMemory.py [-p NAME] [-o FILE] -- COMMAND [ARGS ...]

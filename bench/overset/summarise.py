@@ -1,4 +1,7 @@
 #!/usr/bin/python3
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
 """Table and chart of the overset stencil benchmark (bench/overset/run).
 
     bench/overset/summarise.py -dir DIR [-startup K] [-o PREFIX] RUN [RUN ...]

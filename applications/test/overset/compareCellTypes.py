@@ -1,4 +1,7 @@
 #!/usr/bin/python3
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
 """
 Compare overset runs of the same case: cellTypes per written time against a
 reference run (match fraction, cells differing per type pair) and the

@@ -1,4 +1,7 @@
 #!/usr/bin/python3
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
 """
 Compare the multibody motion of two drone runs (eABAMeshMotion) that
 differ only in the overset stencil: each body's force of bodies.dat and

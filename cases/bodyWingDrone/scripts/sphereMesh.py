@@ -1,4 +1,7 @@
 #!/usr/bin/python3
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
 """
 Body-wing drone: the body's component mesh, a spherical shell around the
 sphere of radius one chord (cellZone "body").
@@ -27,7 +30,7 @@ import math
 import os
 import sys
 
-CBAR = 0.015                # mean chord [m] (REFERENCE.md Table 1)
+CBAR = 0.015                # mean chord [m] (docs/paper.md, Table 1)
 R1 = CBAR                   # body radius: one chord
 MARGIN = 0.8*CBAR           # body -> overset boundary, as the wing's [m]
 

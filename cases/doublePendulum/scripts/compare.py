@@ -1,4 +1,7 @@
 #!/usr/bin/python3
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
 """Double pendulum: compare rigidBodySimulate (eABA) with the Lagrangian
 reference (doublePendulumReference) and run the case's checks.
 

@@ -1,4 +1,7 @@
 #!/usr/bin/python3
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
 """
 Checks of single-wing drone runs (used by Alltest).  Each prints one
 "PASS <name> <numbers>" or "FAIL <name> <numbers>" line; the exit status is

@@ -1,4 +1,7 @@
 #!/usr/bin/python3
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
 """
 Single-wing drone overset mesh generator (flapFoam, cases/singleWingDrone).
 
@@ -45,7 +48,7 @@ boundary.
 Background: cube of side 20 cbar centred on the origin (flapping axis at
 the stroke plane), uniform N0^3 hex cells, refined nRef times (refineHexMesh,
 2:1 balanced) in nested regions that contain the volume swept by the wing
-component for |phi| <= 75 deg and |alpha| <= 45 deg (REFERENCE.md Table 1),
+component for |phi| <= 75 deg and |alpha| <= 45 deg (docs/paper.md, Table 1),
 so that the component's outer boundary always lies in cells of size
 h = 20 cbar/(N0 2^nRef).
 

@@ -1,4 +1,7 @@
 #!/usr/bin/python3
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
 """
 Orphan check of the overset stencil (stock inverseDistance, OpenFOAM v1912)
 from the cellTypes and zoneID fields that dynamicOversetFvMesh writes at

@@ -1,4 +1,7 @@
 #!/usr/bin/python3
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
 """
 Plots of a single-wing drone run (Allrun calls it at the end of a run).
 
@@ -26,7 +29,7 @@ folders from that time on), and writes, in OUTDIR (default DIR/plots):
                          (/work/main/scripts/plotStepTimers.py on
                          postProcessing/stepTimers).
 
-Reference values (REFERENCE.md section 3):
+Reference values (docs/paper.md section 3):
   S = pi/4 c_r R = R cbar (planform area of the wing);
   U_ref = 4 f A_phi R2,  R2 = sqrt(int c r^2 dr / S), the radius of
   gyration of the planform ABOUT THE FLAPPING AXIS: r is measured from the

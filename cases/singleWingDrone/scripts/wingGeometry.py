@@ -1,6 +1,6 @@
 """
 Single-wing drone (SW) geometry: the semi-elliptical thin-plate wing of
-Poletti et al. (REFERENCE.md section 3, Table 1) and its analytic surface area.
+Poletti et al. (docs/paper.md section 3, Table 1) and its analytic surface area.
 
 Frame (phi = alpha = 0): flapping axis z through the origin, stroke plane x-y,
 the wing spans +y from y = R0 (root) to y = R0 + R (tip), chord along x,
