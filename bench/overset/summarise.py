@@ -25,13 +25,13 @@ import time
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "..", "scripts"))
-import plotStepTimers  # noqa: E402
+sys.path.insert(0, os.environ.get("FLAPFOAM_PROJECT_DIR", os.path.join(
+    os.path.dirname(os.path.abspath(__file__)), "../..")) + "/scripts")
+from flapfoam import stepTimers  # noqa: E402
 
 
 def median_columns(case, startup):
-    columns, data = plotStepTimers.read_input(
+    columns, data = stepTimers.read_input(
         os.path.join(case, "postProcessing", "stepTimers"), startup)
     return {c: float(np.median(data[:, i])) for i, c in enumerate(columns)}, \
         len(data)

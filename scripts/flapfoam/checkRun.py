@@ -46,52 +46,22 @@ non-zero on failure.
 """
 
 import argparse
-import glob
 import math
 import os
-import re
 import sys
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-import plotRun  # noqa: E402
+from flapfoam import checks, stepTimers
+from flapfoam.foamDict import multibodyCoeffs, readState
+from flapfoam.tables import joinedTable, startFolders, timeFolders
+from flapfoam.wang import imposedJoints
 
 
 # --------------------------------------------------------------------------
 
 def report(ok, name, text):
-    print("%s %s %s" % ("PASS" if ok else "FAIL", name, text))
-    return 0 if ok else 1
-
-
-def timeFolders(case):
-    """Numeric time folders of a case (float, path), in order."""
-    out = []
-    for d in glob.glob(os.path.join(case, "[0-9]*")):
-        try:
-            out.append((float(os.path.basename(d)), d))
-        except ValueError:
-            pass
-    return sorted(out)
-
-
-def readState(path):
-    """{q, qDot, qDdot: arrays, t: float} of a rigidBodyMotionState."""
-    with open(path) as f:
-        text = f.read()
-    text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
-    text = re.sub(r"//[^\n]*", " ", text)
-    state = {}
-    for key in ("q", "qDot", "qDdot"):
-        m = re.search(r"\b%s\s+\d+\s*\(([^)]*)\)\s*;" % key, text)
-        if m is None:
-            m = re.search(r"\b%s\s+\(([^)]*)\)\s*;" % key, text)
-        state[key] = np.array(m.group(1).split(), dtype=float)
-    m = re.search(r"\bt\s+([^;\s]+)\s*;", text)
-    state["t"] = float(m.group(1))
-    return state
+    return checks.report(ok, "%s %s" % (name, text))
 
 
 def states(case):
@@ -107,9 +77,9 @@ def states(case):
 def joints(case, name="eABAMeshMotion"):
     """(columns, rows) of joints.dat joined over the start folders."""
     base = os.path.join(case, "postProcessing", name)
-    if not plotRun.startFolders(base):
+    if not startFolders(base):
         sys.exit("checkRun: no %s/<time>/joints.dat" % base)
-    return plotRun.joinedTable(base, "joints.dat", keepEarlierAtStart=False)
+    return joinedTable(base, "joints.dat", keepEarlierAtStart=False)
 
 
 def relDiff(a, b, floor):
@@ -117,15 +87,13 @@ def relDiff(a, b, floor):
 
 
 def multibodyDict(case):
-    d = plotRun.readFoamDict(os.path.join(case, "constant",
-                                          "dynamicMeshDict"))
-    return d.get("eABAMeshMotionCoeffs", d)
+    return multibodyCoeffs(os.path.join(case, "constant", "dynamicMeshDict"))
 
 
 # --------------------------------------------------------------------------
 
 def checkPrescribed(args):
-    imposed = plotRun.imposedJoints(multibodyDict(args.case))
+    imposed = imposedJoints(multibodyDict(args.case))
     if not imposed:
         return report(False, "prescribed", "no imposedMotion entries")
 
@@ -167,16 +135,11 @@ def checkPrescribed(args):
 
 
 def checkTimers(args):
-    import importlib.util
-    spec = importlib.util.spec_from_file_location(
-        "plotStepTimers", plotRun.PLOT_STEP_TIMERS)
-    pst = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(pst)
-    files = pst.find_files(os.path.join(args.case, "postProcessing",
+    files = stepTimers.find_files(os.path.join(args.case, "postProcessing",
                                         "stepTimers"))
     rows = []
     for f in files:
-        r = pst.read_file(f)
+        r = stepTimers.read_file(f)
         rows.extend(r[args.nStartup:])
     if not rows:
         return report(False, args.name or "timers", "no steps after the "

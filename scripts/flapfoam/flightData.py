@@ -24,7 +24,8 @@ holds one (restarts append to it).
         per column (timers excluded by default); one line per dataset.
 
 One PASS/FAIL line per check; exit status 1 on a failure.  As a module:
-find(case), load(case) -> (attrs, {name: array}).
+find(case), load(case) -> (attrs, {name: array}), tables(case) -> the
+joints.dat and bodies.dat tables.
 """
 
 import argparse
@@ -34,6 +35,8 @@ import re
 import sys
 
 import numpy as np
+
+from flapfoam.checks import report
 
 
 def find(case):
@@ -69,9 +72,37 @@ def load(case):
     return attrs, data
 
 
-def report(ok, what):
-    print("%s %s" % ("PASS" if ok else "FAIL", what))
-    return 0 if ok else 1
+def tables(case):
+    """The joints.dat and bodies.dat tables (columns, rows) from the run's
+    flightData.h5, or None without one.  The loads of a row are those of
+    the step that ends at its time, as in bodies.dat."""
+    if find(case) is None:
+        return None
+    _, d = load(case)
+    t = d["time"][:, None]
+    q, qDot, qDdot = d["joints/q"], d["joints/qDot"], d["joints/qDdot"]
+    jcols, jdata = ["time"], [t]
+    for i in range(q.shape[1]):
+        jcols += ["q_%d" % i, "qDot_%d" % i, "qDdot_%d" % i]
+        jdata += [q[:, i:i+1], qDot[:, i:i+1], qDdot[:, i:i+1]]
+    if "joints/tau" in d:
+        # column names tau_<q index>, as the dataset's columns
+        import h5py
+        with h5py.File(find(case), "r") as f:
+            prescribed = [c.split("_")[1]
+                          for c in f["joints/tau"].attrs["columns"].split()]
+        for k, qi in enumerate(prescribed):
+            jcols += ["tau_%s" % qi, "power_%s" % qi]
+            jdata += [d["joints/tau"][:, k:k+1], d["joints/power"][:, k:k+1]]
+    bcols, bdata = ["time"], [t]
+    bodies = sorted({k.split("/")[1] for k in d if k.startswith("bodies/")})
+    for b in bodies:
+        for name, key in (("c", "position"), ("F", "force"),
+                          ("M", "moment")):
+            for c, v in zip("xyz", d["bodies/%s/%s" % (b, key)].T):
+                bcols.append("%s:%s%s" % (b, name, c))
+                bdata.append(v[:, None])
+    return jcols, np.hstack(jdata), bcols, np.hstack(bdata)
 
 
 def check(a):

@@ -1,7 +1,10 @@
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
 """
 Minimal reader of an OpenFOAM polyMesh (ascii or binary, label 32 bit,
 scalar 64 bit) and of volScalarField internal fields, for the checks of
-the single-wing drone case.  numpy only.
+the drone cases.  numpy only.
 """
 
 import os

@@ -1,3 +1,6 @@
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
 """
 Single-wing drone (SW) geometry: the semi-elliptical thin-plate wing of
 Poletti et al. (docs/paper.md section 3, Table 1) and its analytic surface area.
@@ -87,6 +90,33 @@ def edgeNormal(tau):
     tau = np.asarray(tau, dtype=float)
     n = np.stack([np.cos(tau)/A, np.sin(tau)/R], axis=-1)
     return n/np.linalg.norm(n, axis=-1, keepdims=True)
+
+
+def radiusOfGyration():
+    """R2 = sqrt(int_{R0}^{R0+R} c(r - R0) r^2 dr / S), r from the flapping
+    axis (closed form; checked against radiusOfGyrationQuadrature)."""
+    return math.sqrt(R0**2 + 8.0/(3.0*math.pi)*R0*R + 0.25*R**2)
+
+
+def radiusOfGyrationQuadrature(n=200001):
+    """The same integral by the trapezoidal rule in tau, r = R0 + R sin(tau)
+    (smooth integrand despite the square-root tip)."""
+    tau = np.linspace(0.0, 0.5*math.pi, n)
+    rho = R*np.sin(tau)
+    w = chord(rho)*(R0 + rho)**2*R*np.cos(tau)
+    integral = np.trapz(w, tau)
+    return math.sqrt(integral/planformArea())
+
+
+def poseMatrix(phiDeg, alphaDeg):
+    """The wing's rotation at flapping angle phi (about z) and pitching
+    angle alpha (about the pitch axis y), in degrees."""
+    phi, alpha = np.radians(phiDeg), np.radians(alphaDeg)
+    Rz = np.array([[np.cos(phi), -np.sin(phi), 0],
+                   [np.sin(phi), np.cos(phi), 0], [0, 0, 1]])
+    Ry = np.array([[np.cos(alpha), 0, np.sin(alpha)], [0, 1, 0],
+                   [-np.sin(alpha), 0, np.cos(alpha)]])
+    return Rz @ Ry
 
 
 def summary():

@@ -21,12 +21,9 @@ import sys
 
 import numpy as np
 
-sys.path.insert(
-    0,
-    os.path.join(
-        os.environ.get("FLAPFOAM_PROJECT_DIR", ""),
-        "cases", "singleWingDrone", "scripts"))
-import foamMesh  # noqa: E402
+sys.path.insert(0, os.environ.get("FLAPFOAM_PROJECT_DIR", os.path.join(
+    os.path.dirname(os.path.abspath(__file__)), "../../..")) + "/scripts")
+from flapfoam import foamMesh  # noqa: E402
 
 
 def times(case):

@@ -6,7 +6,7 @@
 Compare the multibody motion of two drone runs (eABAMeshMotion) that
 differ only in the overset stencil: each body's force of bodies.dat and
 the trajectory of joints.dat, rows matched by time (the readers of
-cases/singleWingDrone/scripts/checkRun.py and plotRun.py).
+flapfoam.checkRun and flapfoam.tables).
 
 Usage: compareMotion.py REF CASE [-forceTol 0.005] [-qTol 1e-4]
                         [-columns q_0,qDot_0,q_1,qDot_1] [-bodies wing]
@@ -27,20 +27,17 @@ import sys
 
 import numpy as np
 
-sys.path.insert(
-    0,
-    os.path.join(
-        os.environ.get("FLAPFOAM_PROJECT_DIR", ""),
-        "cases", "singleWingDrone", "scripts"))
-import checkRun  # noqa: E402
-import plotRun  # noqa: E402
+sys.path.insert(0, os.environ.get("FLAPFOAM_PROJECT_DIR", os.path.join(
+    os.path.dirname(os.path.abspath(__file__)), "../../..")) + "/scripts")
+from flapfoam import checkRun  # noqa: E402
+from flapfoam.tables import joinedTable, startFolders  # noqa: E402
 
 
 def bodies(case, name="eABAMeshMotion"):
     base = os.path.join(case, "postProcessing", name)
-    if not plotRun.startFolders(base):
+    if not startFolders(base):
         sys.exit("compareMotion: no %s/<time>/bodies.dat" % base)
-    return plotRun.joinedTable(base, "bodies.dat", keepEarlierAtStart=False)
+    return joinedTable(base, "bodies.dat", keepEarlierAtStart=False)
 
 
 def main():

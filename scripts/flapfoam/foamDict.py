@@ -1,0 +1,78 @@
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
+"""
+Minimal OpenFOAM dictionary reader (enough for dynamicMeshDict) and the
+rigidBodyMotionState of a time folder.  numpy only.
+"""
+
+import os
+import re
+
+import numpy as np
+
+
+def readFoamDict(path):
+    """Nested dict of an OpenFOAM dictionary file: sub-dictionaries as dicts,
+    entries as lists of tokens (strings)."""
+    with open(path) as f:
+        text = f.read()
+    text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
+    text = re.sub(r"//[^\n]*", " ", text)
+    tokens = re.findall(r'"[^"]*"|[{}();]|[^\s{}();"]+', text)
+    pos = 0
+
+    def parse():
+        nonlocal pos
+        d = {}
+        while pos < len(tokens):
+            t = tokens[pos]
+            if t == "}":
+                pos += 1
+                return d
+            key = t
+            pos += 1
+            if pos < len(tokens) and tokens[pos] == "{":
+                pos += 1
+                d[key] = parse()
+                continue
+            value = []
+            depth = 0
+            while pos < len(tokens):
+                t = tokens[pos]
+                pos += 1
+                if t == "(":
+                    depth += 1
+                elif t == ")":
+                    depth -= 1
+                elif t == ";" and depth == 0:
+                    break
+                value.append(t)
+            d[key] = value
+        return d
+
+    return parse()
+
+
+def readState(path):
+    """{q, qDot, qDdot: arrays, t: float} of a rigidBodyMotionState."""
+    with open(path) as f:
+        text = f.read()
+    text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
+    text = re.sub(r"//[^\n]*", " ", text)
+    state = {}
+    for key in ("q", "qDot", "qDdot"):
+        m = re.search(r"\b%s\s+\d+\s*\(([^)]*)\)\s*;" % key, text)
+        if m is None:
+            m = re.search(r"\b%s\s+\(([^)]*)\)\s*;" % key, text)
+        state[key] = np.array(m.group(1).split(), dtype=float)
+    m = re.search(r"\bt\s+([^;\s]+)\s*;", text)
+    state["t"] = float(m.group(1))
+    return state
+
+
+def multibodyCoeffs(path):
+    """The multibody motion's coefficients of a dynamicMeshDict: its
+    eABAMeshMotionCoeffs, else the whole dictionary."""
+    d = readFoamDict(path)
+    return d.get("eABAMeshMotionCoeffs", d)

@@ -1,0 +1,171 @@
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
+"""
+Plots of a body-wing drone run (Allrun calls it at the end of a run).
+
+    scripts/plotRun.py [-case DIR] [-o OUTDIR]
+
+Reads the run's flight data (postProcessing/flightData/<start>/
+flightData.h5, flapfoam.flightData) and writes, in OUTDIR
+(default DIR/plots):
+
+  trajectory.png         x-z path of the body's centre of mass [mm];
+  bodyPitch.png          body pitch theta = q_2 [deg] against t f;
+  forceCoefficients.png  C_xI, C_zI of the wing and of the body (global
+                         frame; the flightData coefficients: wing S = R cbar,
+                         body S = pi r^2, U_ref = 4 f A_phi R2) against t f,
+                         the wing's downstroke (qDot_3 < 0) shaded;
+  wingPitchingMoment.png the wing's pitching moment coefficient C_m =
+                         M_y/(0.5 rho S U_ref^2 cbar), M about the body's
+                         centre of mass, against t f;
+  prescribedJoints.png   q_3 (flapping) and q_4 (wing pitching), relative to
+                         the body, against the analytic Wang motion of the
+                         run's constant/dynamicMeshDict (wang entries);
+  stepTimers.png         the step-timer bar chart.
+
+The load of the row of t_k is the one used for the step to t_k, from the
+flow at t_{k-1}: it is plotted at t_{k-1} (the start row has none).
+Prints a summary.  Exit status non-zero if the data are missing.
+"""
+
+import argparse
+import os
+import sys
+from types import SimpleNamespace
+
+import numpy as np
+
+from flapfoam import flightData
+from flapfoam.foamDict import multibodyCoeffs
+from flapfoam.plotting import plt, save, shadeDownstrokes, stepTimers
+from flapfoam.wang import wangJoints
+
+
+def readRun(case):
+    """The run's flight data and Wang joints."""
+    attrs, d = flightData.load(case)
+    t = d["time"]
+    wang = wangJoints(multibodyCoeffs(os.path.join(case, "constant",
+                                                   "dynamicMeshDict")))
+    f = wang[3].frequency if 3 in wang else 20.0
+    return SimpleNamespace(attrs=attrs, d=d, t=t, q=d["joints/q"],
+                           qDot=d["joints/qDot"], wang=wang, f=f, tf=f*t)
+
+
+def trajectory(r, out):
+    """(a) trajectory of the body."""
+    d, t = r.d, r.t
+    c = d["bodies/body/position"]
+    fig, ax = plt.subplots(figsize=(6, 5))
+    ax.plot(1e3*c[:, 0], 1e3*c[:, 2], "-")
+    ax.plot(1e3*c[0, 0], 1e3*c[0, 2], "o", label="t = %.4g s" % t[0])
+    ax.plot(1e3*c[-1, 0], 1e3*c[-1, 2], "s", label="t = %.4g s" % t[-1])
+    ax.set_xlabel("x [mm]")
+    ax.set_ylabel("z [mm]")
+    ax.set_title("Body-wing drone: path of the body's centre of mass")
+    ax.grid(True, alpha=0.3)
+    ax.legend()
+    save(fig, out, "trajectory.png")
+    return c
+
+
+def bodyPitch(r, out):
+    """(b) body pitch."""
+    q, tf = r.q, r.tf
+    fig, ax = plt.subplots(figsize=(8, 4))
+    ax.plot(tf, np.degrees(q[:, 2]))
+    ax.set_xlabel("t f [cycles]")
+    ax.set_ylabel("theta = q_2 [deg]")
+    ax.set_title("Body pitch")
+    ax.grid(True, alpha=0.3)
+    save(fig, out, "bodyPitch.png")
+
+
+def coefficients(r, out):
+    """(c), (d) coefficients at the times of the flow they come from."""
+    d, q, qDot, tf = r.d, r.q, r.qDot, r.tf
+    tl = tf[:-1]
+    downstroke = qDot[:-1, 3] if q.shape[1] > 3 else np.zeros_like(tl)
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    shadeDownstrokes(ax, tl, downstroke)
+    for body in ("wing", "body"):
+        C = d["coefficients/" + body][1:]
+        ax.plot(tl, C[:, 0], label="%s C_xI" % body)
+        ax.plot(tl, C[:, 1], label="%s C_zI" % body)
+    ax.axhline(0, color="k", lw=0.5)
+    ax.set_xlabel("t f [cycles]")
+    ax.set_ylabel("C = F / (0.5 rho S U_ref^2)")
+    ax.set_title("Force coefficients (global frame)")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8)
+    save(fig, out, "forceCoefficients.png")
+
+    Cm = d["coefficients/wing"][1:, 2]
+    fig, ax = plt.subplots(figsize=(8, 4))
+    shadeDownstrokes(ax, tl, downstroke)
+    ax.plot(tl, Cm)
+    ax.axhline(0, color="k", lw=0.5)
+    ax.set_xlabel("t f [cycles]")
+    ax.set_ylabel("C_m (wing, about the body's centre of mass)")
+    ax.set_title("Wing pitching moment")
+    ax.grid(True, alpha=0.3)
+    save(fig, out, "wingPitchingMoment.png")
+
+
+def prescribedJoints(r, out):
+    """(e) prescribed joints; the largest error over the amplitude."""
+    t, q, tf, wang = r.t, r.q, r.tf, r.wang
+    worst = 0.0
+    fig, axes = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
+    for qi, ev in sorted(wang.items()):
+        exact, _, _ = ev(t)
+        axes[0].plot(tf, np.degrees(exact), "-", lw=1,
+                     label="q_%d analytic" % qi)
+        axes[0].plot(tf, np.degrees(q[:, qi]), ".", ms=3,
+                     markevery=max(1, len(t)//200), label="q_%d run" % qi)
+        err = np.abs(q[:, qi] - exact)
+        worst = max(worst, float(err.max())/ev.amplitude)
+        axes[1].semilogy(tf, np.maximum(err, 1e-18), label="q_%d" % qi)
+    axes[0].set_ylabel("angle [deg]")
+    axes[0].legend(fontsize=7)
+    axes[1].set_ylabel("|run - analytic| [rad]")
+    axes[1].set_xlabel("t f [cycles]")
+    for ax in axes:
+        ax.grid(True, alpha=0.3)
+    axes[0].set_title("Prescribed joints (relative to the body)")
+    save(fig, out, "prescribedJoints.png")
+    return worst
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[1])
+    ap.add_argument("-case", default=".")
+    ap.add_argument("-o", "--output", default=None)
+    a = ap.parse_args()
+    out = a.output or os.path.join(a.case, "plots")
+    os.makedirs(out, exist_ok=True)
+
+    if flightData.find(a.case) is None:
+        sys.exit("plotRun: no postProcessing/flightData/*/flightData.h5 in %s"
+                 % a.case)
+    r = readRun(a.case)
+    c = trajectory(r, out)
+    bodyPitch(r, out)
+    coefficients(r, out)
+    worst = prescribedJoints(r, out)
+
+    # (f) step timers
+    rc = stepTimers(a.case, out, r.attrs.get("case", ""))
+    if rc != 0:
+        return rc
+
+    t, q = r.t, r.q
+    print("plotRun: %d steps, t = %.6g ... %.6g s; body at x = %.6g m, "
+          "z = %.6g m, theta = %.6g deg; prescribed joints: max |q - "
+          "analytic|/amplitude = %.3g" % (len(t) - 1, t[0], t[-1], c[-1, 0],
+                                         c[-1, 2], np.degrees(q[-1, 2]),
+                                         worst))
+    print("plotRun: wrote %s/{trajectory,bodyPitch,forceCoefficients,"
+          "wingPitchingMoment,prescribedJoints,stepTimers}.png" % out)
+    return 0

@@ -1,0 +1,244 @@
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
+"""
+Plots of a single-wing drone run (Allrun calls it at the end of a run).
+
+    scripts/plotRun.py [-case DIR] [-o OUTDIR] [--dict FILE]
+
+Reads the run's flight data, postProcessing/flightData/<start>/flightData.h5
+(scripts/flightData.py; restarts append to it), or, for runs without it,
+postProcessing/eABAMeshMotion/<startTime>/{joints,bodies}.dat of the case
+(the folders of a run and its restarts joined in time order: a restart
+folder, whose first row is its first step, replaces the rows of the earlier
+folders from that time on), and writes, in OUTDIR (default DIR/plots):
+
+  trajectory.png         (a) x-z trajectory of the drone: x = q_1 (Tx),
+                         z = q_0 (Tz), displacement of the surge link from
+                         its start;
+  forceCoefficients.png  (b) wing force coefficients in the global frame
+                             C_xI = F_x/(0.5 rho S U_ref^2), C_zI likewise,
+                         against t f (cycles), downstroke shaded (phi
+                         decreasing, qDot_2 < 0);
+  prescribedJoints.png   (c) q_2 (flapping phi) and q_3 (pitching alpha)
+                         against the analytic Wang motion evaluated here
+                         from the imposedMotion entries of the run's
+                         constant/dynamicMeshDict, and their difference;
+  stepTimers.png         (d) the step-timer bar chart
+                         (scripts/plotStepTimers.py on
+                         postProcessing/stepTimers).
+
+Reference values (docs/paper.md section 3):
+  S = pi/4 c_r R = R cbar (planform area of the wing);
+  U_ref = 4 f A_phi R2,  R2 = sqrt(int c r^2 dr / S), the radius of
+  gyration of the planform ABOUT THE FLAPPING AXIS: r is measured from the
+  axis, from R0 (root) to R0 + R (tip), c = c(r - R0) of wingGeometry.py.
+  Closed form for the semi-ellipse: R2^2 = R0^2 + 8/(3 pi) R0 R + R^2/4,
+  R2 = 45.67 mm, U_ref = 4.783 m/s (r from the root instead: R2 = R/2).
+  f, A_phi from the flapping entry, rho from rhoInf of the dictionary.
+
+Times: the load in the bodies.dat row of time t_k is the one the model
+used for the step to t_k, computed from the flow at the start of that step
+(t_{k-1}); it is plotted at t_{k-1}.
+
+Prints a summary (rows, time span, final position, mean coefficients over
+the complete cycles, largest prescribed-joint deviation).  Exit status
+non-zero if the data are missing.
+
+Uses Debian's python (/usr/bin/python3) with numpy and matplotlib (Agg).
+"""
+
+
+import argparse
+import math
+import os
+import sys
+from types import SimpleNamespace
+
+import numpy as np
+
+from flapfoam import flightData
+from flapfoam import wingGeometry as geo
+from flapfoam.foamDict import multibodyCoeffs
+from flapfoam.plotting import plt, save, shadeDownstrokes, stepTimers
+from flapfoam.tables import joinedTable, startFolders
+from flapfoam.wang import imposedJoints
+
+
+def readRun(case, dictPath):
+    """The run's tables, prescribed joints and reference values; prints
+    them."""
+    coeffs = multibodyCoeffs(dictPath)
+    joints = imposedJoints(coeffs)
+    rho = float(coeffs.get("rhoInf", ["1.2"])[0])
+
+    base = os.path.join(case, "postProcessing", "eABAMeshMotion")
+    tables = flightData.tables(case)
+    if tables is not None:
+        jcols, J, bcols, B = tables
+        source = "flightData.h5"
+        print("plotRun: reading %s" % flightData.find(case))
+    else:
+        if not startFolders(base):
+            sys.exit("plotRun: no %s/<time>/joints.dat and no flightData.h5"
+                     % base)
+        jcols, J = joinedTable(base, "joints.dat", keepEarlierAtStart=False)
+        bcols, B = joinedTable(base, "bodies.dat", keepEarlierAtStart=True)
+        source = "joints.dat: 12 digits"
+    jc = {c: i for i, c in enumerate(jcols)}
+    bc = {c: i for i, c in enumerate(bcols)}
+    t = J[:, 0]
+
+    flap = joints.get(2)
+    f = flap.frequency if flap else 20.0
+    Aphi = flap.amplitude if flap else 75.0*math.pi/180.0
+    S = geo.planformArea()
+    R2 = geo.radiusOfGyration()
+    Uref = 4.0*f*Aphi*R2
+    qref = 0.5*rho*S*Uref**2
+
+    print("plotRun: %d steps, t = %.6g ... %.6g s (%.3f cycles), %d restart "
+          "folder(s)" % (len(t) - 1, t[0], t[-1], (t[-1] - t[0])*f,
+                         len(startFolders(base)) - 1))
+    print("plotRun: S = %.6g m^2, R2 = %.6g m (about the flapping axis; "
+          "quadrature %.6g), U_ref = 4 f A_phi R2 = %.6g m/s, rho = %g"
+          % (S, R2, geo.radiusOfGyrationQuadrature(), Uref, rho))
+    return SimpleNamespace(joints=joints, J=J, B=B, jc=jc, bc=bc, t=t, f=f,
+                           Uref=Uref, qref=qref, source=source)
+
+
+def trajectory(r, out):
+    """(a) x-z trajectory of the surge link."""
+    J, jc, t = r.J, r.jc, r.t
+    x = J[:, jc["q_1"]]
+    z = J[:, jc["q_0"]]
+    fig, ax = plt.subplots(figsize=(6, 5))
+    ax.plot(1e3*x, 1e3*z, "-", lw=1.2)
+    ax.plot(1e3*x[0], 1e3*z[0], "o", label="t = %.4g s" % t[0])
+    ax.plot(1e3*x[-1], 1e3*z[-1], "s", label="t = %.4g s" % t[-1])
+    ax.set_xlabel("x = q_1 (Tx) [mm]")
+    ax.set_ylabel("z = q_0 (Tz) [mm]")
+    ax.set_title("Single-wing drone: trajectory of the surge link")
+    ax.grid(True, alpha=0.3)
+    ax.legend()
+    save(fig, out, "trajectory.png")
+    print("plotRun: final x = %.6g m, z = %.6g m, xDot = %.6g, zDot = %.6g "
+          "m/s" % (x[-1], z[-1], J[-1, jc["qDot_1"]], J[-1, jc["qDot_0"]]))
+
+
+def forceCoefficients(r, out):
+    """(b) wing force coefficients: the row of t_k holds the load of the
+    flow at t_{k-1}."""
+    J, jc, B, bc, t = r.J, r.jc, r.B, r.bc, r.t
+    f, qref, Uref = r.f, r.qref, r.Uref
+    if not ("wing:Fx" in bc and len(B) > 1):
+        return
+    tF = B[:-1, 0]
+    Cx = B[1:, bc["wing:Fx"]]/qref
+    Cz = B[1:, bc["wing:Fz"]]/qref
+    # the phase of the stroke at the load times
+    qDot2 = np.interp(tF, t, J[:, jc["qDot_2"]]) if "qDot_2" in jc \
+        else np.zeros_like(tF)
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    shadeDownstrokes(ax, f*tF, qDot2)
+    ax.plot(f*tF, Cx, label="C_xI")
+    ax.plot(f*tF, Cz, label="C_zI")
+    ax.axhline(0, color="k", lw=0.5)
+    # The impulsive start (the flow at rest, the wing at full speed with
+    # -midStroke) gives coefficients of order 1e3 for a few steps: the
+    # range is clipped to median +- 10 scaled median absolute deviations
+    # (at least the 2-98 percentile range) when the spikes would hide
+    # the rest; the full range is printed
+    both = np.concatenate([Cx, Cz])
+    med = np.median(both)
+    spread = 10*1.4826*np.median(np.abs(both - med)) + 1e-12
+    p2, p98 = np.percentile(both, [2, 98])
+    lo, hi = min(med - spread, p2), max(med + spread, p98)
+    if len(both) > 40 and (both.min() < lo or both.max() > hi):
+        pad = 0.05*(hi - lo)
+        ax.set_ylim(lo - pad, hi + pad)
+        ax.text(0.01, 0.01, "range clipped: C from %.3g to %.3g"
+                % (both.min(), both.max()), transform=ax.transAxes,
+                fontsize=8, va="bottom")
+    print("plotRun: C_xI from %.4g to %.4g, C_zI from %.4g to %.4g"
+          % (Cx.min(), Cx.max(), Cz.min(), Cz.max()))
+    ax.set_xlabel("t f [cycles]")
+    ax.set_ylabel("C = F / (0.5 rho S U_ref^2)")
+    ax.set_title("Wing force coefficients (global frame), U_ref = %.3f "
+                 "m/s" % Uref)
+    ax.grid(True, alpha=0.3)
+    ax.legend()
+    save(fig, out, "forceCoefficients.png")
+    nCycles = int(math.floor((tF[-1] - t[0])*f + 1e-9))
+    if nCycles >= 1:
+        sel = tF <= t[0] + nCycles/f
+        w = np.gradient(tF[sel]) if sel.sum() > 1 else np.ones(1)
+        print("plotRun: mean C_xI = %.6g, C_zI = %.6g over %d cycle(s)"
+              % (np.sum(w*Cx[sel])/np.sum(w), np.sum(w*Cz[sel])/np.sum(w),
+                 nCycles))
+    print("plotRun: last C_xI = %.6g, C_zI = %.6g" % (Cx[-1], Cz[-1]))
+
+
+def prescribedJoints(r, out):
+    """(c) prescribed joints against the analytic motion."""
+    J, jc, t, f, joints, source = r.J, r.jc, r.t, r.f, r.joints, r.source
+    if not joints:
+        return
+    fig, axes = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
+    worst = 0.0
+    for qi, ev in sorted(joints.items()):
+        q, _, _ = ev(t)
+        sim = J[:, jc["q_%d" % qi]]
+        label = "q_%d %s" % (qi, ev.name)
+        axes[0].plot(f*t, np.degrees(q), "-", lw=1,
+                     label=label + " analytic")
+        axes[0].plot(f*t, np.degrees(sim), ".", ms=3,
+                     markevery=max(1, len(t)//200),
+                     label=label + " eABAMeshMotion")
+        err = np.abs(sim - q)
+        worst = max(worst, err.max()/ev.amplitude)
+        axes[1].semilogy(f*t, np.maximum(err, 1e-18), lw=1,
+                         label="|q_%d - analytic|" % qi)
+    axes[0].set_ylabel("angle [deg]")
+    axes[0].grid(True, alpha=0.3)
+    axes[0].legend(fontsize=7)
+    axes[1].set_ylabel("|difference| [rad]")
+    axes[1].set_xlabel("t f [cycles]")
+    axes[1].grid(True, alpha=0.3)
+    axes[1].legend(fontsize=7)
+    axes[0].set_title("Prescribed joints against the Wang kinematics "
+                      "(%s)" % source)
+    save(fig, out, "prescribedJoints.png")
+    print("plotRun: prescribed joints: max |q - analytic|/amplitude = "
+          "%.3g" % worst)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[1],
+                                 formatter_class=argparse.RawTextHelpFormatter)
+    ap.add_argument("-case", default=".", help="case directory")
+    ap.add_argument("-o", "--output", default=None,
+                    help="output directory (default CASE/plots; a relative "
+                         "path is relative to the working directory)")
+    ap.add_argument("--dict", default=None,
+                    help="multibody dictionary (default "
+                         "CASE/constant/dynamicMeshDict)")
+    args = ap.parse_args()
+
+    case = args.case
+    out = args.output or os.path.join(case, "plots")
+    os.makedirs(out, exist_ok=True)
+    r = readRun(case, args.dict or os.path.join(case, "constant",
+                                                "dynamicMeshDict"))
+    trajectory(r, out)
+    forceCoefficients(r, out)
+    prescribedJoints(r, out)
+
+    # (d) step timers
+    rc = stepTimers(case, out, os.path.basename(os.path.abspath(case)))
+    if rc != 0:
+        print("plotRun: plotStepTimers.py failed (exit %d)" % rc)
+        return rc
+    print("plotRun: wrote %s/{trajectory,forceCoefficients,prescribedJoints,"
+          "stepTimers}.png" % out)
+    return 0

@@ -1,0 +1,87 @@
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
+"""
+Per-step tables of a run (joints.dat, bodies.dat of eABAMeshMotion or
+rigidBodySimulate), joined over the start folders of a run and its
+restarts, and the numeric time folders of a case.  numpy only.
+"""
+
+import glob
+import os
+import sys
+
+import numpy as np
+
+
+def readTable(path):
+    """(columns, rows) of a joints.dat/bodies.dat file: the first comment
+    line starting '# time' names the columns."""
+    columns = None
+    rows = []
+    with open(path) as f:
+        for line in f:
+            words = line.split()
+            if not words:
+                continue
+            if words[0] == "#":
+                if columns is None and len(words) > 1 and words[1] == "time":
+                    columns = words[1:]
+                continue
+            rows.append([float(w) for w in words])
+    if columns is None:
+        sys.exit("plotRun: %s has no '# time ...' header" % path)
+    data = np.array(rows, dtype=float).reshape(-1, len(columns))
+    return columns, data
+
+
+def startFolders(base):
+    """Start-time folders of a postProcessing/<name> directory, in order."""
+    if not os.path.isdir(base):
+        return []
+    found = []
+    for d in os.listdir(base):
+        try:
+            found.append((float(d), os.path.join(base, d)))
+        except ValueError:
+            pass
+    return sorted(found)
+
+
+def joinedTable(base, fileName, keepEarlierAtStart):
+    """The rows of base/<t>/fileName of all start folders t joined: a later
+    folder replaces the rows from its start time on; its first row (the
+    start time) is dropped when keepEarlierAtStart and an earlier row
+    exists."""
+    columns = None
+    data = None
+    for t0, folder in startFolders(base):
+        path = os.path.join(folder, fileName)
+        if not os.path.isfile(path):
+            continue
+        cols, rows = readTable(path)
+        if columns is None:
+            columns, data = cols, rows
+            continue
+        if cols != columns:
+            sys.exit("plotRun: %s: columns differ from the first folder"
+                     % path)
+        eps = 1e-9*max(abs(t0), 1e-300) + 1e-15
+        if keepEarlierAtStart and np.any(np.abs(data[:, 0] - t0) <= eps):
+            data = np.vstack([data[data[:, 0] <= t0 + eps],
+                              rows[rows[:, 0] > t0 + eps]])
+        else:
+            data = np.vstack([data[data[:, 0] < t0 - eps], rows])
+    return columns, data
+
+
+def timeFolders(case):
+    """Numeric time folders of a case (float, path), in order."""
+    out = []
+    for d in glob.glob(os.path.join(case, "[0-9]*")):
+        try:
+            out.append((float(os.path.basename(d)), d))
+        except ValueError:
+            pass
+    return sorted(out)
+

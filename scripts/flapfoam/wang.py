@@ -1,0 +1,72 @@
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
+"""
+Analytic Wang kinematics of the imposedMotion entries of a multibody
+dictionary (foamDict.readFoamDict).  numpy only.
+"""
+
+import math
+
+import numpy as np
+
+
+def wangMotion(entry):
+    """Analytic Wang kinematics of an imposedMotion entry (type wang):
+    flapping q = offset + A/asin(K) asin(K cos(theta)),
+    pitching q = offset + A/tanh(K) tanh(K sin(theta)),
+    theta = 2 pi f t + phase.  Returns f(t) -> (q, qDot, qDdot)."""
+    if entry["type"][0] != "wang":
+        raise ValueError("imposedMotion entry of type %s, not wang"
+                         % entry["type"][0])
+    waveform = entry["waveform"][0]
+    A = float(entry["amplitude"][0])
+    f = float(entry["frequency"][0])
+    K = float(entry["K"][0])
+    phase = float(entry.get("phase", ["0"])[0])
+    offset = float(entry.get("offset", ["0"])[0])
+    w = 2.0*math.pi*f
+
+    def evaluate(t):
+        theta = w*np.asarray(t, dtype=float) + phase
+        c, s = np.cos(theta), np.sin(theta)
+        if waveform == "flapping":
+            S = A/math.asin(K)
+            u, du, ddu = K*c, -K*w*s, -w*w*K*c
+            one = 1.0 - u*u
+            q = offset + S*np.arcsin(u)
+            qDot = S*du/np.sqrt(one)
+            qDdot = S/np.sqrt(one)*(ddu + u*du*du/one)
+        else:
+            S = A/math.tanh(K)
+            v, dv, ddv = K*s, K*w*c, -w*w*K*s
+            th = np.tanh(v)
+            sech2 = 1.0/np.cosh(v)**2
+            q = offset + S*th
+            qDot = S*dv*sech2
+            qDdot = S*sech2*(ddv - 2.0*th*dv*dv)
+        return q, qDot, qDdot
+
+    evaluate.amplitude = A
+    evaluate.frequency = f
+    evaluate.waveform = waveform
+    return evaluate
+
+
+def imposedJoints(coeffs):
+    """{joint index: wang evaluator} of the imposedMotion entries."""
+    joints = {}
+    for name, entry in coeffs.get("imposedMotion", {}).items():
+        if isinstance(entry, dict) and "joint" in entry:
+            ev = wangMotion(entry)
+            ev.name = name
+            joints[int(entry["joint"][0])] = ev
+    return joints
+
+
+def wangJoints(coeffs):
+    """{joint index: wang evaluator} of the imposedMotion entries of type
+    wang (other types skipped)."""
+    return {int(e["joint"][0]): wangMotion(e)
+            for e in coeffs.get("imposedMotion", {}).values()
+            if isinstance(e, dict) and e.get("type", [""])[0] == "wang"}
