@@ -61,6 +61,7 @@ import argparse
 import glob
 import json
 import os
+from types import SimpleNamespace
 
 import numpy as np
 
@@ -76,25 +77,8 @@ AREA_TOL = 0.02
 CALCULATED, INTERPOLATED, HOLE = 0, 1, 2
 
 
-def meshCheck(argv=None):
-    """scripts/meshCheck.py: the mesh checks (see the module's doc)."""
-    ap = argparse.ArgumentParser()
-    ap.add_argument("-case", default=".")
-    ap.add_argument("-level", default=None,
-                    help="level (default: from mesh/meshGen.json)")
-    ap.add_argument("-json", default=None, help="write the results here")
-    args = ap.parse_args(argv)
-
-    pm = os.path.join(args.case, "constant", "polyMesh")
-    level = args.level
-    gen = os.path.join(args.case, "mesh", "meshGen.json")
-    if level is None and os.path.exists(gen):
-        with open(gen) as fh:
-            level = json.load(fh)["level"]
-
-    report = Checks()
-    res = {"level": level}
-
+def checkCells(pm, level, report, res):
+    """Cells per zone and in total against the level's target."""
     nCells = fm.readNCells(os.path.join(pm, "owner"))
     zones = fm.readZoneSizes(os.path.join(pm, "cellZones"))
     res.update(nCells=nCells, zones=zones)
@@ -115,13 +99,10 @@ def meshCheck(argv=None):
                "tolerance %.0f %%)" % (level, nCells, tgt, 100*err,
                                        100*COUNT_TOL))
 
-    bnd = fm.readBoundary(os.path.join(pm, "boundary"))
-    expect = {"wing": "wall", "oversetPatch": "overset", "farField": "patch"}
-    report(all(bnd.get(p, {}).get("type") == t for p, t in expect.items())
-           and set(bnd) == set(expect),
-           "patches %s" % ", ".join("%s(%s)" % (p, d["type"])
-                                     for p, d in bnd.items()))
 
+def checkWingArea(pm, bnd, gen, report, res):
+    """The wing patch's area against the analytic one, and its breakdown
+    in the wing frame (pose of gen, meshGen.json)."""
     pts = fm.readPoints(os.path.join(pm, "points"))
     offs, verts = fm.readFaces(os.path.join(pm, "faces"))
     w = bnd["wing"]
@@ -156,6 +137,35 @@ def meshCheck(argv=None):
               flat, flatExact, 100*(flat/flatExact - 1), band, bandExact,
               100*(band/bandExact - 1)))
 
+
+def meshCheck(argv=None):
+    """scripts/meshCheck.py: the mesh checks (see the module's doc)."""
+    ap = argparse.ArgumentParser()
+    ap.add_argument("-case", default=".")
+    ap.add_argument("-level", default=None,
+                    help="level (default: from mesh/meshGen.json)")
+    ap.add_argument("-json", default=None, help="write the results here")
+    args = ap.parse_args(argv)
+
+    pm = os.path.join(args.case, "constant", "polyMesh")
+    level = args.level
+    gen = os.path.join(args.case, "mesh", "meshGen.json")
+    if level is None and os.path.exists(gen):
+        with open(gen) as fh:
+            level = json.load(fh)["level"]
+
+    report = Checks()
+    res = {"level": level}
+
+    checkCells(pm, level, report, res)
+    bnd = fm.readBoundary(os.path.join(pm, "boundary"))
+    expect = {"wing": "wall", "oversetPatch": "overset", "farField": "patch"}
+    report(all(bnd.get(p, {}).get("type") == t for p, t in expect.items())
+           and set(bnd) == set(expect),
+           "patches %s" % ", ".join("%s(%s)" % (p, d["type"])
+                                     for p, d in bnd.items()))
+
+    checkWingArea(pm, bnd, gen, report, res)
     return report.finish(args.json, res)
 
 
@@ -214,37 +224,24 @@ def meshAt(case, time):
     return pts
 
 
-def oversetCheck(argv=None):
-    """scripts/oversetCheck.py: the orphan check (see the module's doc)."""
-    ap = argparse.ArgumentParser()
-    ap.add_argument("-case", default=".")
-    ap.add_argument("-time", nargs="*", default=None)
-    ap.add_argument("-json", default=None)
-    args = ap.parse_args(argv)
+def writtenTimes(case):
+    """The time folders > 0 holding cellTypes, in order."""
+    times = []
+    for d in glob.glob(os.path.join(case, "[0-9]*")):
+        name = os.path.basename(d)
+        try:
+            if float(name) > 0 and (
+                    glob.glob(os.path.join(d, "cellTypes*"))):
+                times.append(name)
+        except ValueError:
+            pass
+    times.sort(key=float)
+    return times
 
-    case = args.case
-    with open(os.path.join(case, "mesh", "meshGen.json")) as fh:
-        gen = json.load(fh)
-    h = gen["background"]["h"]
-    margin = gen["component"]["margin"]
-    Rgen = geo.poseMatrix(gen["pose"]["phiDeg"], gen["pose"]["alphaDeg"])
 
-    times = args.time
-    if times is None:
-        times = []
-        for d in glob.glob(os.path.join(case, "[0-9]*")):
-            name = os.path.basename(d)
-            try:
-                if float(name) > 0 and (
-                        glob.glob(os.path.join(d, "cellTypes*"))):
-                    times.append(name)
-            except ValueError:
-                pass
-        times.sort(key=float)
-    if not times:
-        print("FAIL no time directory with cellTypes in %s" % case)
-        return 1
-
+def meshAddressing(case):
+    """Faces, cells and patches of the case's polyMesh, the points as
+    generated, the wing patch's points and the overset patch's cells."""
     pm = os.path.join(case, "constant", "polyMesh")
     offs, verts = fm.readFaces(os.path.join(pm, "faces"))
     # the mesh as generated (pose of meshGen.json): points0 when the mesh was
@@ -261,55 +258,98 @@ def oversetCheck(argv=None):
     wingPoints = np.unique(np.concatenate(
         [verts[offs[f]:offs[f + 1]] for f in wingFaces]))
     ovCells = np.unique(owner[o["startFace"]:o["startFace"] + o["nFaces"]])
+    return SimpleNamespace(offs=offs, verts=verts, pts0=pts0, owner=owner,
+                           neighbour=neighbour, nCells=nCells,
+                           wingPoints=wingPoints, ovCells=ovCells)
+
+
+def holeClearance(x0, margin, h):
+    """Background holes x0 (the component's frame at phi = alpha = 0):
+    how many lie outside the component, their smallest clearance to its
+    boundary and the farthest from the plate (in h)."""
+    dPlan = planformDistance(x0[:, :2])
+    zClear = 0.5*geo.THICKNESS + margin - np.abs(x0[:, 2])
+    clear = np.minimum(margin - dPlan, zClear)
+    outside = int(np.sum(clear < 0))
+    clearance = float(clear.min())/h
+    dWall = np.hypot(dPlan, np.maximum(
+        np.abs(x0[:, 2]) - 0.5*geo.THICKNESS, 0.0))
+    return outside, clearance, float(dWall.max())/h
+
+
+def checkTime(case, t, m, gen):
+    """The cell types and orphans of one written time: the results."""
+    h = gen["background"]["h"]
+    margin = gen["component"]["margin"]
+    Rgen = geo.poseMatrix(gen["pose"]["phiDeg"], gen["pose"]["alphaDeg"])
+    nCells = m.nCells
+    types = np.rint(fm.readScalarField(
+        os.path.join(case, t, "cellTypes"))).astype(int)
+    zone = np.rint(fm.readScalarField(
+        os.path.join(case, t, "zoneID"))).astype(int)
+    if np.isscalar(types) or len(types) != nCells:
+        types = np.full(nCells, int(types)) if np.isscalar(types) \
+            else types
+    pts = meshAt(case, t)
+    cc, fc = cellCentresApprox(pts, m.offs, m.verts, m.owner, m.neighbour,
+                               nCells)
+
+    res = {"time": t}
+    for z, name in ((0, "background"), (1, "wing")):
+        sel = zone == z
+        res[name] = {k: int(np.sum(types[sel] == v)) for k, v in
+                     (("calculated", CALCULATED),
+                      ("interpolated", INTERPOLATED), ("hole", HOLE))}
+    wingOrphans = int(np.sum((zone == 1) & (types == HOLE)))
+    ovNotInterp = int(np.sum(types[m.ovCells] != INTERPOLATED))
+
+    # background holes in the component's frame at phi = alpha = 0
+    R, T = rigidFit(m.pts0[m.wingPoints], pts[m.wingPoints])
+    bgHoles = np.where((zone == 0) & (types == HOLE))[0]
+    outside = 0
+    clearance = dmax = float("nan")
+    if len(bgHoles):
+        x0 = ((cc[bgHoles] - T) @ R) @ Rgen   # R^T, then Rgen^T
+        outside, clearance, dmax = holeClearance(x0, margin, h)
+    res.update(wingOrphans=wingOrphans, backgroundOrphans=outside,
+               oversetAcceptorsNotInterpolated=ovNotInterp,
+               minHoleClearance_h=clearance, maxHoleDistance_h=dmax,
+               h=h)
+    return res
+
+
+def oversetCheck(argv=None):
+    """scripts/oversetCheck.py: the orphan check (see the module's doc)."""
+    ap = argparse.ArgumentParser()
+    ap.add_argument("-case", default=".")
+    ap.add_argument("-time", nargs="*", default=None)
+    ap.add_argument("-json", default=None)
+    args = ap.parse_args(argv)
+
+    case = args.case
+    with open(os.path.join(case, "mesh", "meshGen.json")) as fh:
+        gen = json.load(fh)
+    times = writtenTimes(case) if args.time is None else args.time
+    if not times:
+        print("FAIL no time directory with cellTypes in %s" % case)
+        return 1
+    m = meshAddressing(case)
 
     report = Checks()
     results = []
     for t in times:
-        types = np.rint(fm.readScalarField(
-            os.path.join(case, t, "cellTypes"))).astype(int)
-        zone = np.rint(fm.readScalarField(
-            os.path.join(case, t, "zoneID"))).astype(int)
-        if np.isscalar(types) or len(types) != nCells:
-            types = np.full(nCells, int(types)) if np.isscalar(types) \
-                else types
-        pts = meshAt(case, t)
-        cc, fc = cellCentresApprox(pts, offs, verts, owner, neighbour, nCells)
-
-        res = {"time": t}
-        for z, name in ((0, "background"), (1, "wing")):
-            sel = zone == z
-            res[name] = {k: int(np.sum(types[sel] == v)) for k, v in
-                         (("calculated", CALCULATED),
-                          ("interpolated", INTERPOLATED), ("hole", HOLE))}
-        wingOrphans = int(np.sum((zone == 1) & (types == HOLE)))
-        ovNotInterp = int(np.sum(types[ovCells] != INTERPOLATED))
-
-        # background holes in the component's frame at phi = alpha = 0
-        R, T = rigidFit(pts0[wingPoints], pts[wingPoints])
-        bgHoles = np.where((zone == 0) & (types == HOLE))[0]
-        outside = 0
-        clearance = dmax = float("nan")
-        if len(bgHoles):
-            x0 = ((cc[bgHoles] - T) @ R) @ Rgen   # R^T, then Rgen^T
-            dPlan = planformDistance(x0[:, :2])
-            zClear = 0.5*geo.THICKNESS + margin - np.abs(x0[:, 2])
-            clear = np.minimum(margin - dPlan, zClear)
-            outside = int(np.sum(clear < 0))
-            clearance = float(clear.min())/h
-            dWall = np.hypot(dPlan, np.maximum(
-                np.abs(x0[:, 2]) - 0.5*geo.THICKNESS, 0.0))
-            dmax = float(dWall.max())/h
-        res.update(wingOrphans=wingOrphans, backgroundOrphans=outside,
-                   oversetAcceptorsNotInterpolated=ovNotInterp,
-                   minHoleClearance_h=clearance, maxHoleDistance_h=dmax,
-                   h=h)
+        res = checkTime(case, t, m, gen)
         results.append(res)
-        report(wingOrphans == 0 and outside == 0 and ovNotInterp == 0,
+        report(res["wingOrphans"] == 0 and res["backgroundOrphans"] == 0
+               and res["oversetAcceptorsNotInterpolated"] == 0,
                "time %s: orphans: wing %d, background %d (holes outside "
                "the component); overset acceptors not interpolated %d; "
                "background holes: farthest %.2f h from the plate, clearance "
                "to the overset boundary >= %.2f h (h = %.3g m)" % (
-                   t, wingOrphans, outside, ovNotInterp, dmax, clearance, h))
+                   t, res["wingOrphans"], res["backgroundOrphans"],
+                   res["oversetAcceptorsNotInterpolated"],
+                   res["maxHoleDistance_h"], res["minHoleClearance_h"],
+                   res["h"]))
         for name in ("background", "wing"):
             print("    %-10s calculated %8d  interpolated %7d  hole %7d" % (
                 name, res[name]["calculated"], res[name]["interpolated"],

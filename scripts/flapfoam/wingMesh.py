@@ -197,20 +197,37 @@ def planformLength(P, C, a, b):
     return float(np.linalg.norm(P[b] - P[a]))
 
 
-def wingComponent(lev, comp, pose=(0.0, 0.0)):
-    """BlockMesh of the wing component for level parameters lev."""
-    t = geo.THICKNESS
+# Planform blocks (counter-clockwise seen from +z), the plate's (inside:
+# not at the wing level, where the plate is the hole) and the hex sides of
+# the plate edge and of the overset boundary
+QUADS = {
+    "C":     ("Q0", "Q1", "Q2", "Q3"),
+    "L":     ("E0", "Q0", "Q3", "P2"),
+    "T":     ("Q1", "E5", "P1", "Q2"),
+    "Tp":    ("Q3", "Q2", "P1", "P2"),
+    "ringL": ("P2", "OP2", "OE0", "E0"),
+    "ringTp": ("P1", "OP1", "OP2", "P2"),
+    "ringT": ("E5", "OE5", "OP1", "P1"),
+    "rootL": ("OE0", "OQ0", "Q0", "E0"),
+    "rootC": ("OQ0", "OQ1", "Q1", "Q0"),
+    "rootT": ("OQ1", "OE5", "E5", "Q1"),
+}
+INSIDE = ("C", "L", "T", "Tp")
+EDGE_SIDE = {"ringL": "x0", "ringTp": "x0", "ringT": "x0",
+             "rootL": "y1", "rootC": "y1", "rootT": "y1"}
+OUTER_SIDE = {"ringL": "x1", "ringTp": "x1", "ringT": "x1",
+              "rootL": "y0", "rootC": "y0", "rootT": "y0"}
+
+
+def planformSizes(lev, comp, P, C, hOut):
+    """Cell sizes of the planform edges (a, b) -> sizes a -> b, and the
+    radial distribution and the top span size dTop."""
     d = comp["margin"]
     q = lev["q"]
-    nS, nL, nC, nT = lev["nS"], lev["nL"], lev["nC"], lev["nT"]
-    dsZ = t/nT
+    nS, nL, nC = lev["nS"], lev["nL"], lev["nC"]
     dsE = lev["dsE"]
-    hOut = backgroundCellSize(lev, BACKGROUND)
-
-    P, C = wingPlanform(comp)
     Lp = lambda a, b: planformLength(P, C, a, b)  # noqa: E731
 
-    # ---- planform edge distributions (a -> b) ----
     S = {}
     # radial: from the plate edge out to the overset boundary
     nR = nCellsGrowth(d, dsE, hOut, q)
@@ -237,6 +254,57 @@ def wingComponent(lev, comp, pose=(0.0, 0.0)):
             ("OQ0", "OQ1"): ("Q0", "Q1"), ("OQ1", "OE5"): ("Q1", "E5")}.items():
         inner = S[(ia, ib)] if (ia, ib) in S else S[(ib, ia)][::-1]
         S[(a_, b_)] = inner/inner.sum()*Lp(a_, b_)
+    return S, rad, dTop
+
+
+def checkCounterClockwise(P):
+    for k, qd in QUADS.items():
+        xy = np.array([P[n] for n in qd])
+        area = 0.5*np.sum(xy[:, 0]*np.roll(xy[:, 1], -1)
+                          - np.roll(xy[:, 0], -1)*xy[:, 1])
+        if area <= 0:
+            raise RuntimeError("block %s is not counter-clockwise" % k)
+
+
+def addBlocks(bm, V):
+    """The blocks of the three z layers and their patch faces."""
+    # the overset patch first: v1912 wants the master overset patch to be
+    # the first patch of the mesh (the wing mesh is the master of the merge)
+    bm.patch("oversetPatch", "overset")
+    bm.patch("wing", "wall")
+    for iz in range(3):
+        for k, qd in QUADS.items():
+            if iz == 1 and k in INSIDE:
+                continue
+            verts = [V[(n, iz)] for n in qd] + [V[(n, iz + 1)] for n in qd]
+            b = bm.block(verts, "wing")
+            if iz == 0:
+                bm.face("oversetPatch", b, "z0")
+                if k in INSIDE:
+                    bm.face("wing", b, "z1")
+            if iz == 2:
+                bm.face("oversetPatch", b, "z1")
+                if k in INSIDE:
+                    bm.face("wing", b, "z0")
+            if k in OUTER_SIDE:
+                bm.face("oversetPatch", b, OUTER_SIDE[k])
+            if iz == 1 and k in EDGE_SIDE:
+                bm.face("wing", b, EDGE_SIDE[k])
+
+
+def wingComponent(lev, comp, pose=(0.0, 0.0)):
+    """BlockMesh of the wing component for level parameters lev."""
+    t = geo.THICKNESS
+    d = comp["margin"]
+    q = lev["q"]
+    nT = lev["nT"]
+    dsZ = t/nT
+    dsE = lev["dsE"]
+    hOut = backgroundCellSize(lev, BACKGROUND)
+
+    P, C = wingPlanform(comp)
+    S, rad, dTop = planformSizes(lev, comp, P, C, hOut)
+    nR = len(rad)
 
     # ---- z levels and distributions ----
     nZ = nCellsGrowth(d, dsZ, hOut, q)
@@ -275,53 +343,8 @@ def wingComponent(lev, comp, pose=(0.0, 0.0)):
         for nme in names:
             bm.setSizes(V[(nme, iz)], V[(nme, iz + 1)], zSizes[iz])
 
-    # planform blocks (counter-clockwise seen from +z)
-    quads = {
-        "C":     ("Q0", "Q1", "Q2", "Q3"),
-        "L":     ("E0", "Q0", "Q3", "P2"),
-        "T":     ("Q1", "E5", "P1", "Q2"),
-        "Tp":    ("Q3", "Q2", "P1", "P2"),
-        "ringL": ("P2", "OP2", "OE0", "E0"),
-        "ringTp": ("P1", "OP1", "OP2", "P2"),
-        "ringT": ("E5", "OE5", "OP1", "P1"),
-        "rootL": ("OE0", "OQ0", "Q0", "E0"),
-        "rootC": ("OQ0", "OQ1", "Q1", "Q0"),
-        "rootT": ("OQ1", "OE5", "E5", "Q1"),
-    }
-    for k, qd in quads.items():
-        xy = np.array([P[n] for n in qd])
-        area = 0.5*np.sum(xy[:, 0]*np.roll(xy[:, 1], -1)
-                          - np.roll(xy[:, 0], -1)*xy[:, 1])
-        if area <= 0:
-            raise RuntimeError("block %s is not counter-clockwise" % k)
-    inside = ("C", "L", "T", "Tp")
-    # faces (hex side) of the plate edge and of the overset boundary
-    edgeSide = {"ringL": "x0", "ringTp": "x0", "ringT": "x0",
-                "rootL": "y1", "rootC": "y1", "rootT": "y1"}
-    outerSide = {"ringL": "x1", "ringTp": "x1", "ringT": "x1",
-                 "rootL": "y0", "rootC": "y0", "rootT": "y0"}
-    # the overset patch first: v1912 wants the master overset patch to be
-    # the first patch of the mesh (the wing mesh is the master of the merge)
-    bm.patch("oversetPatch", "overset")
-    bm.patch("wing", "wall")
-    for iz in range(3):
-        for k, qd in quads.items():
-            if iz == 1 and k in inside:
-                continue
-            verts = [V[(n, iz)] for n in qd] + [V[(n, iz + 1)] for n in qd]
-            b = bm.block(verts, "wing")
-            if iz == 0:
-                bm.face("oversetPatch", b, "z0")
-                if k in inside:
-                    bm.face("wing", b, "z1")
-            if iz == 2:
-                bm.face("oversetPatch", b, "z1")
-                if k in inside:
-                    bm.face("wing", b, "z0")
-            if k in outerSide:
-                bm.face("oversetPatch", b, outerSide[k])
-            if iz == 1 and k in edgeSide:
-                bm.face("wing", b, edgeSide[k])
+    checkCounterClockwise(P)
+    addBlocks(bm, V)
 
     info = dict(nR=nR, nZ=nZ, dsZ=dsZ, dsE=dsE, hOut=hOut,
                 radialLast=float(rad[-1]), zLast=float(zSizes[2][-1]),
