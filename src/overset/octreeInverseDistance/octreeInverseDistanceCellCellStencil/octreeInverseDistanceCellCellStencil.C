@@ -69,9 +69,6 @@ Foam::cellCellStencils::octreeInverseDistance::holeCuttingTypeNames
 const Foam::word
 Foam::cellCellStencils::octreeInverseDistance::stencilPart("oversetStencil");
 
-const Foam::label
-Foam::cellCellStencils::octreeInverseDistance::voxelBlock(8);
-
 const Foam::word
 Foam::cellCellStencils::octreeInverseDistance::orphanSetName
 (
@@ -365,28 +362,11 @@ void Foam::cellCellStencils::octreeInverseDistance::buildCache
     zoneResidual_.setSize(nZones, Zero);
 
     // Voxel maps: refilled at the next update
-    patchParts_.clear();
-    patchBlocks_.clear();
-    patchParts_.setSize(nZones);
-    patchBlocks_.setSize(nZones);
-    patchBlockList_.setSize(nZones);
-    patchFilled_.setSize(nZones);
-    patchFilledBb_.setSize(nZones);
-    patchFilledDivs_.setSize(nZones, labelVector::zero);
+    localVoxels_ = List<patchVoxelMap>(nZones);
     patchFilledSmallVec_.setSize(nZones, Zero);
     patchFilledPoints_.setSize(nZones);
-    patchMin_.setSize(nZones);
-    patchMax_.setSize(nZones);
-    patchFilledNPatch_.setSize(nZones, 0);
     patchVoxels_.setSize(nZones);
-    remoteParts_.clear();
-    remoteBlocks_.clear();
-    remoteParts_.setSize(nZones);
-    remoteBlocks_.setSize(nZones);
-    remoteBlockList_.setSize(nZones);
-    remoteMin_.setSize(nZones);
-    remoteMax_.setSize(nZones);
-    remoteSet_.setSize(nZones);
+    remoteVoxels_ = List<patchVoxelMap>(nZones);
 
     for (label zonei = 0; zonei < nZones; ++zonei)
     {
@@ -408,11 +388,12 @@ bool Foam::cellCellStencils::octreeInverseDistance::voxelsCurrent
     const labelVector& nDivs
 ) const
 {
+    const patchVoxelMap& map = localVoxels_[zonei];
     if
     (
-        !patchParts_.set(zonei)
-     || patchFilledDivs_[zonei] != nDivs
-     || patchFilledBb_[zonei] != bb
+        !map.allocated()
+     || map.nDivs() != nDivs
+     || map.bb() != bb
      || patchFilledSmallVec_[zonei] != smallVec_
     )
     {
@@ -441,9 +422,6 @@ bool Foam::cellCellStencils::octreeInverseDistance::voxelsCurrent
 void Foam::cellCellStencils::octreeInverseDistance::markZoneBoundaries
 (
     const label zonei,
-    const labelList& zoneID,
-    const boundBox& bb,
-    const labelVector& nDivs,
     const bool fillVoxels,
     labelList& patchCellTypes
 )
@@ -452,26 +430,15 @@ void Foam::cellCellStencils::octreeInverseDistance::markZoneBoundaries
     // share no faces, so the zone's sub-mesh boundary is the mesh boundary
     // restricted to the zone (the sub-mesh's exposed-face patch is empty)
 
+    const labelList& zoneID = this->zoneID();
     const fvBoundaryMesh& pbm = mesh_.boundary();
     const pointField& points = mesh_.points();
-
-    PackedList<2>& patchTypes = patchParts_[zonei];
-    PackedList<1>& blocks = patchBlocks_[zonei];
-    DynamicList<boundBox>& filled = patchFilled_[zonei];
-    labelVector& patchMin = patchMin_[zonei];
-    labelVector& patchMax = patchMax_[zonei];
-    const labelVector maxIndex(nDivs - labelVector::one);
-    const labelVector nBlocks(blockDivisions(nDivs));
+    patchVoxelMap& map = localVoxels_[zonei];
 
     // Two passes, as the stock stencil: proper patches, then overset
     // patches on top
     for (const bool oversetPass : {false, true})
     {
-        if (oversetPass && fillVoxels)
-        {
-            patchFilledNPatch_[zonei] = filled.size();
-        }
-
         for (const fvPatch& fvp : pbm)
         {
             const bool isOverset = isA<oversetFvPatch>(fvp);
@@ -482,9 +449,6 @@ void Foam::cellCellStencils::octreeInverseDistance::markZoneBoundaries
                 continue;
             }
 
-            const unsigned int val =
-                oversetPass ? patchCellType::OVERSET : patchCellType::PATCH;
-
             const labelList& fc = fvp.faceCells();
             const polyPatch& pp = fvp.patch();
 
@@ -494,7 +458,8 @@ void Foam::cellCellStencils::octreeInverseDistance::markZoneBoundaries
                 {
                     continue;
                 }
-                patchCellTypes[fc[i]] = val;
+                patchCellTypes[fc[i]] =
+                    oversetPass ? patchCellType::OVERSET : patchCellType::PATCH;
 
                 if (!fillVoxels)
                 {
@@ -505,52 +470,14 @@ void Foam::cellCellStencils::octreeInverseDistance::markZoneBoundaries
                 faceBb.min() -= smallVec_;
                 faceBb.max() += smallVec_;
 
-                if (!bb.overlaps(faceBb))
+                if (oversetPass)
                 {
-                    continue;
+                    map.fillOversetFace(faceBb);
                 }
-
-                const labelVector lo
-                (
-                    max(labelVector::zero, index3(bb, nDivs, faceBb.min()))
-                );
-                const labelVector hi(index3(bb, nDivs, faceBb.max()));
-
-                if (!oversetPass)
+                else
                 {
-                    // Voxel range and blocks of the PATCH voxels (a
-                    // superset: OVERSET may overwrite)
-                    patchMin = min(patchMin, lo);
-                    patchMax = max(patchMax, hi);
-
-                    const labelVector top(min(maxIndex, hi));
-                    const labelVector b0(lo/voxelBlock);
-                    const labelVector b1(top/voxelBlock);
-                    for (label bi = b0.x(); bi <= b1.x(); ++bi)
-                    {
-                        for (label bj = b0.y(); bj <= b1.y(); ++bj)
-                        {
-                            for (label bk = b0.z(); bk <= b1.z(); ++bk)
-                            {
-                                const label blocki =
-                                    index(nBlocks, labelVector(bi, bj, bk));
-                                if (blocks.set(blocki))
-                                {
-                                    patchBlockList_[zonei].append(blocki);
-                                }
-                            }
-                        }
-                    }
+                    map.fillPatchFace(faceBb);
                 }
-                else if (!rangesMeet(lo, hi, patchMin, patchMax, nDivs))
-                {
-                    // Overwrites no PATCH voxel; OVERSET and OTHER voxels
-                    // are the same to the hole test (overlaps: PATCH only)
-                    continue;
-                }
-
-                fill(patchTypes, bb, nDivs, faceBb, val);
-                filled.append(faceBb);
             }
         }
     }
@@ -558,8 +485,6 @@ void Foam::cellCellStencils::octreeInverseDistance::markZoneBoundaries
     if (fillVoxels)
     {
         // What the map was filled with
-        patchFilledBb_[zonei] = bb;
-        patchFilledDivs_[zonei] = nDivs;
         patchFilledSmallVec_[zonei] = smallVec_;
 
         const labelList& pointMap = zoneParts_[zonei].pointMap();
@@ -573,160 +498,21 @@ void Foam::cellCellStencils::octreeInverseDistance::markZoneBoundaries
 }
 
 
-Foam::labelVector
-Foam::cellCellStencils::octreeInverseDistance::blockDivisions
-(
-    const labelVector& nDivs
-)
-{
-    return labelVector
-    (
-        (nDivs.x() + voxelBlock - 1)/voxelBlock,
-        (nDivs.y() + voxelBlock - 1)/voxelBlock,
-        (nDivs.z() + voxelBlock - 1)/voxelBlock
-    );
-}
-
-
-Foam::treeBoundBox
-Foam::cellCellStencils::octreeInverseDistance::voxelRangeBox
-(
-    const boundBox& bb,
-    const labelVector& nDivs,
-    const labelVector& lo,
-    const labelVector& hi
-)
-{
-    const vector span(bb.span());
-    const vector h
-    (
-        span.x()/nDivs.x(), span.y()/nDivs.y(), span.z()/nDivs.z()
-    );
-    return treeBoundBox
-    (
-        bb.min() + vector(lo.x()*h.x(), lo.y()*h.y(), lo.z()*h.z()),
-        bb.min() + vector(hi.x()*h.x(), hi.y()*h.y(), hi.z()*h.z())
-    );
-}
-
-
-bool Foam::cellCellStencils::octreeInverseDistance::rangesMeet
-(
-    const labelVector& lo,
-    const labelVector& hi,
-    const labelVector& pMin,
-    const labelVector& pMax,
-    const labelVector& nDivs
-)
-{
-    for (direction d = 0; d < 3; ++d)
-    {
-        if (hi[d] < pMin[d] || lo[d] > min(pMax[d], nDivs[d] - 1))
-        {
-            return false;
-        }
-    }
-    return true;
-}
-
-
-void Foam::cellCellStencils::octreeInverseDistance::clearVoxels
-(
-    const label zonei,
-    const labelVector& nDivs
-)
-{
-    const label nVoxels = nDivs.x()*nDivs.y()*nDivs.z();
-    const labelVector nB(blockDivisions(nDivs));
-
-    if
-    (
-        patchParts_.set(zonei)
-     && patchParts_[zonei].size() == nVoxels
-     && patchFilledDivs_[zonei] == nDivs
-    )
-    {
-        // Reset last step's voxels (fill with the same boxes, map box and
-        // divisions sets exactly the voxels set then)
-        for (const boundBox& faceBb : patchFilled_[zonei])
-        {
-            fill
-            (
-                patchParts_[zonei],
-                patchFilledBb_[zonei],
-                nDivs,
-                faceBb,
-                patchCellType::OTHER
-            );
-        }
-
-        if (debug)
-        {
-            const PackedList<2>& map = patchParts_[zonei];
-            for (label i = 0; i < map.size(); ++i)
-            {
-                if (map.get(i) != patchCellType::OTHER)
-                {
-                    FatalErrorInFunction
-                        << "voxel " << i << " of zone " << zonei
-                        << " not reset" << abort(FatalError);
-                }
-            }
-        }
-        for (const label blocki : patchBlockList_[zonei])
-        {
-            patchBlocks_[zonei].unset(blocki);
-        }
-    }
-    else
-    {
-        patchParts_.set
-        (
-            zonei,
-            new PackedList<2>(nVoxels, patchCellType::OTHER)
-        );
-        patchBlocks_.set
-        (
-            zonei,
-            new PackedList<1>(nB.x()*nB.y()*nB.z(), 0u)
-        );
-    }
-    patchFilled_[zonei].clear();
-    patchBlockList_[zonei].clear();
-    patchMin_[zonei] = labelVector::uniform(labelMax);
-    patchMax_[zonei] = labelVector::uniform(-1);
-}
-
-
 void Foam::cellCellStencils::octreeInverseDistance::markHoles
 (
-    const label srcI,
+    const patchVoxelMap& src,
     const label tgtI,
-    const List<treeBoundBoxList>& patchBb,
-    const List<labelVector>& patchDivisions,
-    const PackedList<2>& srcPatchTypes,
-    const PackedList<1>& blocks,
-    const labelUList& blockList,
-    const labelVector& pMin,
-    const labelVector& pMax,
+    const boundBox& tgtBb,
     const bool incremental,
     labelList& allCellTypes
 )
 {
-    const treeBoundBox& srcPatchBb = patchBb[srcI][0];
-    const labelVector& nDivs = patchDivisions[srcI];
-    const labelVector nBlocks(blockDivisions(nDivs));
-    const labelVector maxIndex(nDivs - labelVector::one);
-
-    if
-    (
-        !srcPatchBb.overlaps(patchBb[tgtI][0])
-     || pMin.x() > pMax.x() || pMin.y() > pMax.y() || pMin.z() > pMax.z()
-    )
+    if (src.noPatch() || !src.bb().overlaps(tgtBb))
     {
         return;
     }
 
+    const labelVector maxIndex(src.nDivs() - labelVector::one);
     const labelList& cellMap = zoneParts_[tgtI].cellMap();
     const scalarField& radius = cellRadius_[tgtI];
     const pointField& cc = mesh_.cellCentres();
@@ -739,7 +525,7 @@ void Foam::cellCellStencils::octreeInverseDistance::markHoles
     const labelList tested
     (
         incremental
-      ? holeCandidates(tgtI, srcPatchBb, nDivs, blockList)
+      ? holeCandidates(tgtI, src)
       : identity(cellMap.size())
     );
     nHoleTested_ += tested.size();
@@ -753,36 +539,11 @@ void Foam::cellCellStencils::octreeInverseDistance::markHoles
         (
             vector::uniform((1 + 1e-6)*radius[i] + margin) + smallVec_
         );
-        const labelVector lo
-        (
-            max(labelVector::zero, index3(srcPatchBb, nDivs, cc[celli] - r))
-        );
-        const labelVector hi
-        (
-            min(maxIndex, index3(srcPatchBb, nDivs, cc[celli] + r))
-        );
-
-        if (!rangesMeet(lo, hi, pMin, pMax, nDivs))
-        {
-            continue;
-        }
+        const labelVector lo(max(labelVector::zero, src.voxel(cc[celli] - r)));
+        const labelVector hi(min(maxIndex, src.voxel(cc[celli] + r)));
 
         // Any block holding a PATCH voxel?
-        const labelVector b0(lo/voxelBlock);
-        const labelVector b1(hi/voxelBlock);
-        bool candidate = false;
-        for (label bi = b0.x(); !candidate && bi <= b1.x(); ++bi)
-        {
-            for (label bj = b0.y(); !candidate && bj <= b1.y(); ++bj)
-            {
-                for (label bk = b0.z(); !candidate && bk <= b1.z(); ++bk)
-                {
-                    candidate =
-                        blocks.get(index(nBlocks, labelVector(bi, bj, bk)));
-                }
-            }
-        }
-        if (!candidate)
+        if (!src.meetsPatchRange(lo, hi) || !src.anyPatchBlock(lo, hi))
         {
             continue;
         }
@@ -792,13 +553,7 @@ void Foam::cellCellStencils::octreeInverseDistance::markHoles
         cBb.min() -= smallVec_;
         cBb.max() += smallVec_;
 
-        if
-        (
-            overlaps
-            (
-                srcPatchBb, nDivs, srcPatchTypes, cBb, patchCellType::PATCH
-            )
-        )
+        if (src.overlapsPatch(cBb))
         {
             allCellTypes[celli] = HOLE;
         }
@@ -1244,12 +999,18 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
             returnReduce(!voxelsCurrent(zonei, bb, d), orOp<bool>());
         if (fillVoxels)
         {
-            clearVoxels(zonei, d);
+            localVoxels_[zonei].reset(bb, d);
+            if (debug && !localVoxels_[zonei].allOther())
+            {
+                FatalErrorInFunction
+                    << "voxel map of zone " << zonei << " not reset"
+                    << abort(FatalError);
+            }
         }
-        markZoneBoundaries(zonei, zoneID, bb, d, fillVoxels, allPatchTypes);
+        markZoneBoundaries(zonei, fillVoxels, allPatchTypes);
         if (fillVoxels && parallel)
         {
-            collectPatchVoxels(zonei, d);
+            patchVoxels_[zonei] = localVoxels_[zonei].patchVoxels();
         }
     }
     nVoxelsSent_ = 0;
@@ -1294,18 +1055,15 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
                 }
                 markHoles
                 (
-                    s, t, patchBb, patchDivisions,
-                    patchParts_[s], patchBlocks_[s], patchBlockList_[s],
-                    patchMin_[s], patchMax_[s], incremental, allCellTypes
+                    localVoxels_[s], t, patchBb[t][0], incremental,
+                    allCellTypes
                 );
-                if (remoteParts_.set(s))
+                if (parallel)
                 {
                     markHoles
                     (
-                        s, t, patchBb, patchDivisions,
-                        remoteParts_[s], remoteBlocks_[s],
-                        remoteBlockList_[s], remoteMin_[s], remoteMax_[s],
-                        incremental, allCellTypes
+                        remoteVoxels_[s], t, patchBb[t][0], incremental,
+                        allCellTypes
                     );
                 }
             }
@@ -1517,24 +1275,11 @@ Foam::cellCellStencils::octreeInverseDistance::octreeInverseDistance
     timers_(stepTimers::New(mesh.time())),
     procBb_(),
     prevRemote_(),
-    patchParts_(),
-    patchBlocks_(),
-    patchBlockList_(),
-    patchFilled_(),
-    patchFilledBb_(),
-    patchFilledDivs_(),
+    localVoxels_(),
     patchFilledSmallVec_(),
     patchFilledPoints_(),
-    patchMin_(),
-    patchMax_(),
-    patchFilledNPatch_(),
     patchVoxels_(),
-    remoteParts_(),
-    remoteBlocks_(),
-    remoteBlockList_(),
-    remoteMin_(),
-    remoteMax_(),
-    remoteSet_(),
+    remoteVoxels_(),
     nVoxelsSent_(0),
     nQueriesSent_(0),
     nHoleTested_(0),

@@ -130,9 +130,7 @@ Foam::labelList
 Foam::cellCellStencils::octreeInverseDistance::holeCandidates
 (
     const label tgtI,
-    const boundBox& bb,
-    const labelVector& nDivs,
-    const labelUList& blockList
+    const patchVoxelMap& src
 ) const
 {
     const zoneDonorSearch& search = zoneSearch_[tgtI];
@@ -142,6 +140,7 @@ Foam::cellCellStencils::octreeInverseDistance::holeCandidates
     const labelList& cells = binCells_[tgtI];
     const label nCells = cellRadius_[tgtI].size();
 
+    const labelUList& blockList = src.blockList();
     if (!nCells || blockList.empty())
     {
         return labelList();
@@ -153,18 +152,13 @@ Foam::cellCellStencils::octreeInverseDistance::holeCandidates
     const scalar m = 4*zoneResidual_[tgtI];
     const scalar grow =
         Foam::sqrt(3.0)*(m + cmptMax(cmptMag(smallVec_))) + m
-      + 1e-9*mag(bb.span());
-
-    const labelVector nBlocks(blockDivisions(nDivs));
+      + 1e-9*mag(src.bb().span());
 
     bitSet isCandidate(nCells);
     for (const label blocki : blockList)
     {
         // The block's voxels, grown
-        const labelVector b(index3(nBlocks, blocki));
-        const labelVector v0(b*voxelBlock);
-        const labelVector v1(min(nDivs, (b + labelVector::one)*voxelBlock));
-        treeBoundBox blockBb(voxelRangeBox(bb, nDivs, v0, v1));
+        treeBoundBox blockBb(src.blockBox(blocki));
         blockBb.min() -= vector::uniform(grow);
         blockBb.max() += vector::uniform(grow);
 

@@ -35,54 +35,6 @@ Description
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::cellCellStencils::octreeInverseDistance::collectPatchVoxels
-(
-    const label zonei,
-    const labelVector& nDivs
-)
-{
-    const PackedList<2>& types = patchParts_[zonei];
-    const boundBox& bb = patchFilledBb_[zonei];
-    const labelVector maxIndex(nDivs - labelVector::one);
-
-    // The PATCH voxels lie in the voxel ranges of the proper-patch face
-    // boxes (the overset pass may have overwritten some)
-    DynamicList<label> voxels;
-    const DynamicList<boundBox>& filled = patchFilled_[zonei];
-    for (label i = 0; i < patchFilledNPatch_[zonei]; ++i)
-    {
-        const labelVector lo
-        (
-            max(labelVector::zero, index3(bb, nDivs, filled[i].min()))
-        );
-        const labelVector hi
-        (
-            min(maxIndex, index3(bb, nDivs, filled[i].max()))
-        );
-
-        for (label vi = lo.x(); vi <= hi.x(); ++vi)
-        {
-            for (label vj = lo.y(); vj <= hi.y(); ++vj)
-            {
-                for (label vk = lo.z(); vk <= hi.z(); ++vk)
-                {
-                    const label v = index(nDivs, labelVector(vi, vj, vk));
-                    if (types.get(v) == patchCellType::PATCH)
-                    {
-                        voxels.append(v);
-                    }
-                }
-            }
-        }
-    }
-
-    labelList& result = patchVoxels_[zonei];
-    result.transfer(voxels);
-    Foam::sort(result);
-    result.setSize(std::unique(result.begin(), result.end()) - result.begin());
-}
-
-
 void Foam::cellCellStencils::octreeInverseDistance::exchangePatchVoxels
 (
     const List<treeBoundBoxList>& patchBb,
@@ -92,24 +44,10 @@ void Foam::cellCellStencils::octreeInverseDistance::exchangePatchVoxels
     const label nZones = zoneSearch_.size();
     const label myProci = Pstream::myProcNo();
 
-    // Clear last step's remote voxels and their blocks
+    // Clear last step's remote voxels, in this step's grids
     for (label zonei = 0; zonei < nZones; ++zonei)
     {
-        if (remoteParts_.set(zonei))
-        {
-            for (const label v : remoteSet_[zonei])
-            {
-                remoteParts_[zonei].set(v, patchCellType::OTHER);
-            }
-            for (const label blocki : remoteBlockList_[zonei])
-            {
-                remoteBlocks_[zonei].unset(blocki);
-            }
-        }
-        remoteSet_[zonei].clear();
-        remoteBlockList_[zonei].clear();
-        remoteMin_[zonei] = labelVector::uniform(labelMax);
-        remoteMax_[zonei] = labelVector::uniform(-1);
+        remoteVoxels_[zonei].reset(patchBb[zonei][0], patchDivisions[zonei]);
     }
 
     // Send each rank the PATCH voxels of zone z that meet its current box
@@ -158,17 +96,10 @@ void Foam::cellCellStencils::octreeInverseDistance::exchangePatchVoxels
                 continue;
             }
 
-            const boundBox& bb = patchBb[zonei][0];
-            const labelVector& nDivs = patchDivisions[zonei];
-
             DynamicList<label> sendVoxels;
             for (const label v : voxels)
             {
-                const labelVector ijk(index3(nDivs, v));
-                treeBoundBox voxelBb
-                (
-                    voxelRangeBox(bb, nDivs, ijk, ijk + labelVector::one)
-                );
+                treeBoundBox voxelBb(localVoxels_[zonei].voxelBox(v));
                 // Round-off of index3 at the voxel faces
                 voxelBb.inflate(1e-6);
 
@@ -219,46 +150,10 @@ void Foam::cellCellStencils::octreeInverseDistance::exchangePatchVoxels
                 continue;
             }
 
-            const labelVector& nDivs = patchDivisions[zonei];
-            const label nVoxels = nDivs.x()*nDivs.y()*nDivs.z();
-            const labelVector nBlocks(blockDivisions(nDivs));
-
-            if
-            (
-                !remoteParts_.set(zonei)
-             || remoteParts_[zonei].size() != nVoxels
-            )
-            {
-                remoteParts_.set
-                (
-                    zonei,
-                    new PackedList<2>(nVoxels, patchCellType::OTHER)
-                );
-                remoteBlocks_.set
-                (
-                    zonei,
-                    new PackedList<1>
-                    (
-                        nBlocks.x()*nBlocks.y()*nBlocks.z(),
-                        0u
-                    )
-                );
-            }
-
-            PackedList<2>& types = remoteParts_[zonei];
-            PackedList<1>& blocks = remoteBlocks_[zonei];
+            patchVoxelMap& map = remoteVoxels_[zonei];
             for (const label v : recv[zonei])
             {
-                const labelVector ijk(index3(nDivs, v));
-                types.set(v, patchCellType::PATCH);
-                const label blocki = index(nBlocks, ijk/voxelBlock);
-                if (blocks.set(blocki))
-                {
-                    remoteBlockList_[zonei].append(blocki);
-                }
-                remoteSet_[zonei].append(v);
-                remoteMin_[zonei] = min(remoteMin_[zonei], ijk);
-                remoteMax_[zonei] = max(remoteMax_[zonei], ijk);
+                map.setPatchVoxel(v);
             }
         }
     }
