@@ -37,21 +37,16 @@ def median_columns(case, startup):
         len(data)
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("-dir", required=True)
-    parser.add_argument("-startup", type=int, default=3)
-    parser.add_argument("-o", default="results")
-    parser.add_argument("runs", nargs="+")
-    args = parser.parse_args()
-
+def readRows(folder, runs, startup):
+    """One row per configuration (level, ranks, stencil): the medians over
+    the rounds of the per-run medians, the overset range, peak memory."""
     # Per configuration, the per-run medians of every round
     groups = {}
-    for run in args.runs:
+    for run in runs:
         parts = run.split("-")
         level, np_, stencil = parts[0], parts[1], parts[2]
-        med, n = median_columns(os.path.join(args.dir, run), args.startup)
-        with open(os.path.join(args.dir, run + ".memory")) as f:
+        med, n = median_columns(os.path.join(folder, run), startup)
+        with open(os.path.join(folder, run + ".memory")) as f:
             mem = float(f.read().split()[0])
         g = groups.setdefault((level, int(np_[2:]), stencil), [])
         g.append(dict(med=med, n=n, mem=mem))
@@ -66,6 +61,11 @@ def main():
                          mem=float(np.median([r["mem"] for r in g])),
                          spread=(min(spread), max(spread))))
 
+    return rows
+
+
+def table(rows, startup):
+    """The markdown lines of the table."""
     base = {(r["level"], r["np"]): r for r in rows
             if r["stencil"] == "inverseDistance"}
     tracking = {(r["level"], r["np"]): r for r in rows
@@ -94,7 +94,7 @@ def main():
         "inverseDistance (ID) or trackingInverseDistance (tracking) over "
         "this run's.  With several rounds: medians over the rounds, and "
         "the overset range over the rounds."
-        % args.startup,
+        % startup,
         "",
         "| level | ranks | stencil | steps x rounds | rbd [s] | "
         "overset [s] (range) | stencil+motion [s] | pimple [s] | total [s] "
@@ -124,10 +124,11 @@ def main():
             " ".join("%.2f" % x for x in os.getloadavg()),
             time.strftime("%Y-%m-%d %H:%M")),
     ]
-    with open(args.o + ".md", "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
+    return lines
 
+
+def chart(rows, png):
+    """Stacked bars of the medians and the peak memory."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -152,7 +153,23 @@ def main():
                          r["stencil"].replace("InverseDistance", "ID"))
                          for r in rows], fontsize=8)
     fig.tight_layout()
-    fig.savefig(args.o + ".png", dpi=120)
+    fig.savefig(png, dpi=120)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("-dir", required=True)
+    parser.add_argument("-startup", type=int, default=3)
+    parser.add_argument("-o", default="results")
+    parser.add_argument("runs", nargs="+")
+    args = parser.parse_args()
+
+    rows = readRows(args.dir, args.runs, args.startup)
+    lines = table(rows, args.startup)
+    with open(args.o + ".md", "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+    chart(rows, args.o + ".png")
     print("summarise: wrote %s.md, %s.png" % (args.o, args.o))
 
 

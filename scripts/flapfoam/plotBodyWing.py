@@ -38,7 +38,8 @@ import numpy as np
 
 from flapfoam import flightData
 from flapfoam.foamDict import multibodyCoeffs
-from flapfoam.plotting import plt, save, shadeDownstrokes, stepTimers
+from flapfoam.plotting import (cycleAxes, path, plt, save, shadeDownstrokes,
+                               stepTimers)
 from flapfoam.wang import wangJoints
 
 
@@ -57,15 +58,9 @@ def trajectory(r, out):
     """(a) trajectory of the body."""
     d, t = r.d, r.t
     c = d["bodies/body/position"]
-    fig, ax = plt.subplots(figsize=(6, 5))
-    ax.plot(1e3*c[:, 0], 1e3*c[:, 2], "-")
-    ax.plot(1e3*c[0, 0], 1e3*c[0, 2], "o", label="t = %.4g s" % t[0])
-    ax.plot(1e3*c[-1, 0], 1e3*c[-1, 2], "s", label="t = %.4g s" % t[-1])
-    ax.set_xlabel("x [mm]")
-    ax.set_ylabel("z [mm]")
-    ax.set_title("Body-wing drone: path of the body's centre of mass")
-    ax.grid(True, alpha=0.3)
-    ax.legend()
+    fig = path(c[:, 0], c[:, 2], t, (
+        "x [mm]", "z [mm]",
+        "Body-wing drone: path of the body's centre of mass"))
     save(fig, out, "trajectory.png")
     return c
 
@@ -93,11 +88,8 @@ def coefficients(r, out):
         C = d["coefficients/" + body][1:]
         ax.plot(tl, C[:, 0], label="%s C_xI" % body)
         ax.plot(tl, C[:, 1], label="%s C_zI" % body)
-    ax.axhline(0, color="k", lw=0.5)
-    ax.set_xlabel("t f [cycles]")
-    ax.set_ylabel("C = F / (0.5 rho S U_ref^2)")
-    ax.set_title("Force coefficients (global frame)")
-    ax.grid(True, alpha=0.3)
+    cycleAxes(ax, "C = F / (0.5 rho S U_ref^2)",
+              "Force coefficients (global frame)")
     ax.legend(fontsize=8)
     save(fig, out, "forceCoefficients.png")
 
@@ -105,11 +97,8 @@ def coefficients(r, out):
     fig, ax = plt.subplots(figsize=(8, 4))
     shadeDownstrokes(ax, tl, downstroke)
     ax.plot(tl, Cm)
-    ax.axhline(0, color="k", lw=0.5)
-    ax.set_xlabel("t f [cycles]")
-    ax.set_ylabel("C_m (wing, about the body's centre of mass)")
-    ax.set_title("Wing pitching moment")
-    ax.grid(True, alpha=0.3)
+    cycleAxes(ax, "C_m (wing, about the body's centre of mass)",
+              "Wing pitching moment")
     save(fig, out, "wingPitchingMoment.png")
 
 

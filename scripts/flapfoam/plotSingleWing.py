@@ -60,7 +60,7 @@ import numpy as np
 from flapfoam import flightData
 from flapfoam import wingGeometry as geo
 from flapfoam.foamDict import multibodyCoeffs
-from flapfoam.plotting import plt, save, shadeDownstrokes, stepTimers
+from flapfoam.plotting import path, plt, save, shadeDownstrokes, stepTimers
 from flapfoam.tables import joinedTable, startFolders
 from flapfoam.wang import imposedJoints
 
@@ -112,15 +112,9 @@ def trajectory(r, out):
     J, jc, t = r.J, r.jc, r.t
     x = J[:, jc["q_1"]]
     z = J[:, jc["q_0"]]
-    fig, ax = plt.subplots(figsize=(6, 5))
-    ax.plot(1e3*x, 1e3*z, "-", lw=1.2)
-    ax.plot(1e3*x[0], 1e3*z[0], "o", label="t = %.4g s" % t[0])
-    ax.plot(1e3*x[-1], 1e3*z[-1], "s", label="t = %.4g s" % t[-1])
-    ax.set_xlabel("x = q_1 (Tx) [mm]")
-    ax.set_ylabel("z = q_0 (Tz) [mm]")
-    ax.set_title("Single-wing drone: trajectory of the surge link")
-    ax.grid(True, alpha=0.3)
-    ax.legend()
+    fig = path(x, z, t, (
+        "x = q_1 (Tx) [mm]", "z = q_0 (Tz) [mm]",
+        "Single-wing drone: trajectory of the surge link"), lw=1.2)
     save(fig, out, "trajectory.png")
     print("plotRun: final x = %.6g m, z = %.6g m, xDot = %.6g, zDot = %.6g "
           "m/s" % (x[-1], z[-1], J[-1, jc["qDot_1"]], J[-1, jc["qDot_0"]]))

@@ -3,8 +3,9 @@
 #     under the GNU General Public License v3 or later (COPYING).
 """
 What the plots of the cases share: matplotlib with the Agg backend (only
-plot modules import this one), saving a figure, the shaded downstrokes and
-the step-timer chart of a run (scripts/plotStepTimers.py).
+plot modules import this one), saving a figure, an x-z path, the axes of a
+plot over the cycles, the shaded downstrokes and the step-timer chart of a
+run (scripts/plotStepTimers.py).
 """
 
 import os
@@ -26,6 +27,31 @@ def save(fig, out, name):
     fig.tight_layout()
     fig.savefig(os.path.join(out, name), dpi=120)
     plt.close(fig)
+
+
+def path(x, z, t, labels, **line):
+    """The figure of an x-z path [mm] from its start (o) to its end (s);
+    labels: the x and z axes' and the title."""
+    fig, ax = plt.subplots(figsize=(6, 5))
+    ax.plot(1e3*x, 1e3*z, "-", **line)
+    ax.plot(1e3*x[0], 1e3*z[0], "o", label="t = %.4g s" % t[0])
+    ax.plot(1e3*x[-1], 1e3*z[-1], "s", label="t = %.4g s" % t[-1])
+    ax.set_xlabel(labels[0])
+    ax.set_ylabel(labels[1])
+    ax.set_title(labels[2])
+    ax.grid(True, alpha=0.3)
+    ax.legend()
+    return fig
+
+
+def cycleAxes(ax, ylabel, title):
+    """The zero line, the labels against t f and the grid of a plot over
+    the cycles."""
+    ax.axhline(0, color="k", lw=0.5)
+    ax.set_xlabel("t f [cycles]")
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.grid(True, alpha=0.3)
 
 
 def shadeDownstrokes(ax, t, qDot):

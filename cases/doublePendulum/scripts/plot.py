@@ -33,6 +33,20 @@ LINE = {"Newmark": dict(lw=2.5, alpha=0.6), "symplectic": dict(lw=1),
 TEX = {"theta1": r"\theta_1", "theta2": r"\theta_2"}
 
 
+def errorPanel(a, ref, runs, key, ylabel, scale=1.0):
+    """|run - reference| of key over scale, each integrator, with the
+    acceptance limit and the end of its window."""
+    for name, e in runs.items():
+        d = np.abs(e[key] - compare.on_times(ref, e["time"], key))
+        a.semilogy(e["time"], np.maximum(d, 1e-16)/scale,
+                   color=STYLE[name][0], label=name, **LINE[name])
+    a.axhline(compare.TOL[key], color="r", ls=":", label="limit")
+    a.axvline(compare.WINDOW[key], color="grey", ls=":")
+    a.set_ylabel(ylabel)
+    a.set_xlabel("t [s]")
+    a.legend(fontsize=8)
+
+
 def plot_prescribed(case, out):
     ref, _ = compare.read_reference("prescribed", case)
     runs = {i: compare.read_eaba(i, case) for i in compare.INTEGRATORS}
@@ -65,27 +79,11 @@ def plot_prescribed(case, out):
     a.set_title("torque of the driven joint")
     a.legend(fontsize=8)
 
-    a = ax[1, 0]
-    for name, e in runs.items():
-        d = np.abs(e["theta2"] - compare.on_times(ref, e["time"], "theta2"))
-        a.semilogy(e["time"], np.maximum(d, 1e-16), color=STYLE[name][0],
-                   label=name, **LINE[name])
-    a.axhline(compare.TOL["theta2"], color="r", ls=":", label="limit")
-    a.axvline(compare.WINDOW["theta2"], color="grey", ls=":")
-    a.set_ylabel(r"$|\theta_2 - \theta_{2,ref}|$ [rad]")
-    a.set_xlabel("t [s]")
-    a.legend(fontsize=8)
-
-    a = ax[1, 1]
-    for name, e in runs.items():
-        d = np.abs(e["tau1"] - compare.on_times(ref, e["time"], "tau1"))
-        a.semilogy(e["time"], np.maximum(d, 1e-16)/np.abs(ref["tau1"]).max(),
-                   color=STYLE[name][0], label=name, **LINE[name])
-    a.axhline(compare.TOL["tau1"], color="r", ls=":", label="limit")
-    a.axvline(compare.WINDOW["tau1"], color="grey", ls=":")
-    a.set_ylabel(r"$|\tau_1 - \tau_{1,ref}|$ / max $|\tau_{1,ref}|$")
-    a.set_xlabel("t [s]")
-    a.legend(fontsize=8)
+    errorPanel(ax[1, 0], ref, runs, "theta2",
+               r"$|\theta_2 - \theta_{2,ref}|$ [rad]")
+    errorPanel(ax[1, 1], ref, runs, "tau1",
+               r"$|\tau_1 - \tau_{1,ref}|$ / max $|\tau_{1,ref}|$",
+               np.abs(ref["tau1"]).max())
 
     fig.suptitle(r"Double pendulum, $\theta_1 = A\cos(2\pi f t) - A$, "
                  r"A = 57 deg, f = 2 Hz: eABA vs Lagrange")
