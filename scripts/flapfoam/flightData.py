@@ -37,6 +37,7 @@ import sys
 import numpy as np
 
 from flapfoam.checks import report
+from flapfoam.tables import timeValue
 
 
 def find(case):
@@ -44,12 +45,8 @@ def find(case):
     files = glob.glob(os.path.join(case, "postProcessing", "flightData", "*",
                                    "flightData.h5"))
 
-    def start(f):
-        try:
-            return float(os.path.basename(os.path.dirname(f)))
-        except ValueError:
-            return float("inf")
-    files.sort(key=start)
+    files.sort(key=lambda f: timeValue(os.path.basename(os.path.dirname(f)),
+                                       float("inf")))
     return files[0] if files else None
 
 

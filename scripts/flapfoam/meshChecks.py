@@ -68,6 +68,7 @@ import numpy as np
 from flapfoam import foamMesh as fm
 from flapfoam import wingGeometry as geo
 from flapfoam.checks import Checks
+from flapfoam.tables import timeValue
 
 TARGETS = {"coarse": 71e3, "medium": 214e3, "fine": 501e3, "finePlus": 808e3}
 TINY_MAX = 30000
@@ -229,12 +230,9 @@ def writtenTimes(case):
     times = []
     for d in glob.glob(os.path.join(case, "[0-9]*")):
         name = os.path.basename(d)
-        try:
-            if float(name) > 0 and (
-                    glob.glob(os.path.join(d, "cellTypes*"))):
-                times.append(name)
-        except ValueError:
-            pass
+        if timeValue(name, 0.0) > 0 and (
+                glob.glob(os.path.join(d, "cellTypes*"))):
+            times.append(name)
     times.sort(key=float)
     return times
 

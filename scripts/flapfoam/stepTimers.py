@@ -13,6 +13,8 @@ import sys
 
 import numpy as np
 
+from flapfoam.tables import timeValue
+
 GROUPS = ["rbd", "overset", "pimple", "total"]
 
 
@@ -29,12 +31,8 @@ def find_files(path):
     if not found:
         sys.exit("plotStepTimers: no stepTimers.dat under " + path)
 
-    def start_time(f):
-        try:
-            return float(os.path.basename(os.path.dirname(f)))
-        except ValueError:
-            return 0.0
-    return sorted(found, key=lambda f: (start_time(f), f))
+    return sorted(found, key=lambda f: (
+        timeValue(os.path.basename(os.path.dirname(f)), 0.0), f))
 
 
 def read_file(fname):

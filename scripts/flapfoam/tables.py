@@ -35,17 +35,21 @@ def readTable(path):
     return columns, data
 
 
+def timeValue(name, default=None):
+    """The time a folder's name stands for, or default if it is no
+    number."""
+    try:
+        return float(name)
+    except ValueError:
+        return default
+
+
 def startFolders(base):
     """Start-time folders of a postProcessing/<name> directory, in order."""
     if not os.path.isdir(base):
         return []
-    found = []
-    for d in os.listdir(base):
-        try:
-            found.append((float(d), os.path.join(base, d)))
-        except ValueError:
-            pass
-    return sorted(found)
+    found = [(timeValue(d), os.path.join(base, d)) for d in os.listdir(base)]
+    return sorted(f for f in found if f[0] is not None)
 
 
 def joinedTable(base, fileName, keepEarlierAtStart):
@@ -77,11 +81,7 @@ def joinedTable(base, fileName, keepEarlierAtStart):
 
 def timeFolders(case):
     """Numeric time folders of a case (float, path), in order."""
-    out = []
-    for d in glob.glob(os.path.join(case, "[0-9]*")):
-        try:
-            out.append((float(os.path.basename(d)), d))
-        except ValueError:
-            pass
-    return sorted(out)
+    out = [(timeValue(os.path.basename(d)), d)
+           for d in glob.glob(os.path.join(case, "[0-9]*"))]
+    return sorted(f for f in out if f[0] is not None)
 

@@ -24,16 +24,14 @@ import numpy as np
 sys.path.insert(0, os.environ.get("FLAPFOAM_PROJECT_DIR", os.path.join(
     os.path.dirname(os.path.abspath(__file__)), "../../..")) + "/scripts")
 from flapfoam import foamMesh  # noqa: E402
+from flapfoam.tables import timeValue  # noqa: E402
 
 
 def times(case):
     out = []
     for d in glob.glob(os.path.join(case, "*")):
         b = os.path.basename(d)
-        try:
-            t = float(b)
-        except ValueError:
-            continue
+        t = timeValue(b, 0.0)
         if t > 0 and os.path.isfile(os.path.join(d, "cellTypes")):
             out.append((t, b))
     return sorted(out)
