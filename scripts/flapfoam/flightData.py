@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 # License
 #     This file is part of flapFoam, derived from OpenFOAM: free software
 #     under the GNU General Public License v3 or later (COPYING).
