@@ -28,14 +28,10 @@ from flapfoam.blockMesh import (BlockMesh, nCellsGrowth, sizesGeometric)
 # N0, nRef   : background base cells per cube side, refinement passes:
 #              h = 20 cbar/(N0 2^nRef) along the wing path; the component's
 #              cells grow to (at most) h at its overset boundary
-# margin     : (optional) the component's margin instead of COMPONENT's.
-#              tiny: 1.0 cbar (29.7k cells).  With 0.8 cbar the tiny mesh
-#              failed at t = 0.0062 s of a cycle (Allrun -level tiny
-#              -motionOnly): the background's 4.7 mm cells next to the
-#              plate, cut by its voxels, reached the component's outer
-#              cells, one of them found no donor and the fringe walk turned
-#              the wing zone into holes; coarse (3.1 mm) passes the cycle
-#              with 0.8 cbar
+# margin     : (optional) the component's margin instead of COMPONENT's
+#              (tiny: 1.0 cbar; with 0.8 cbar tiny failed a whole cycle of
+#              Allrun -motionOnly; cases/bodyWingDrone/README.md, "Whole
+#              cycles")
 # --------------------------------------------------------------------------
 LEVELS = {
     "tiny":     dict(nS=12, nL=3, nC=3, nT=2, dsE=0.7e-3, q=1.4,

@@ -48,22 +48,10 @@ from flapfoam.blockMesh import FOAM_HEADER, writeCase  # noqa: E402
 THETA_MAX = math.radians(20)
 
 # The wing component of the single-wing drone (its margin at each level),
-# its root side 7 mm from the root: 0.5 mm off the body (radius 15 mm, root
-# at 22.5 mm), never inside it, so that the body's walls need not cut it
-# (system/fvSchemes: noHoleCut ((2 1))).  Checked over a whole cycle with
-# Allrun -motionOnly.  The layouts that failed there, all with the stock
-# hole cutting of every pair of zones:
-#  - root side 12 mm from the root (inside the sphere): the sphere's voxels
-#    cut the wing cells near the root, the fringe walk from those holes ran
-#    through the wing cells next to the plate, which have no donor (the
-#    background and body cells there are holes);
-#  - 6 mm (and 4.5 or 5 mm with 0.55 mm voxels): the sphere's voxels still
-#    cut the big outer wing cells of the root side at some poses; the body
-#    cells next to the plate's holes then found no donor (t = 0.00125 s);
-#  - 6 mm without the sphere cutting the wing (noHoleCut): the voxels of
-#    the plate's root faces (their boxes, when pitched, reach 2 mm inboard)
-#    cut the body cells where the wing's root side takes its donors, at
-#    t = 0.0185 s; 7 mm and 2 mm body cells there (sphereMesh.py) pass
+# its root side 7 mm from the root, outside the body (radius 15 mm, root at
+# 22.5 mm), so that the body's walls need not cut it (system/fvSchemes:
+# noHoleCut ((2 1))).  Why this layout, and the layouts that failed a whole
+# cycle of Allrun -motionOnly: README.md, "Whole cycles".
 COMPONENT = dict(wingMesh.COMPONENT, rootMargin=7e-3)
 
 

@@ -35,13 +35,9 @@ R1 = CBAR                   # body radius: one chord
 MARGIN = 0.8*CBAR           # body -> overset boundary, as the wing's [m]
 
 # n: cells along a cube edge (4 n around a great circle); nR: radial cells;
-# dsW: first cell at the body surface [m].  n = 6 at tiny (24 cells around)
-# made cells so wide that their boxes, in the stock hole test, met the wing
-# plate's voxels well inside the body shell; the wing component's fringe
-# next to them found no donor and the fringe walk then turned most of the
-# body and wing zones into holes (no donor anywhere near the plate); n = 10,
-# nR = 10 (3 mm cells at the wing root) failed at t = 0.0185 s of a cycle
-# (Allrun -motionOnly): see meshGen.py's COMPONENT
+# dsW: first cell at the body surface [m].  Fewer cells at tiny (n = 6,
+# or n = 10 with nR = 10) failed a whole cycle of Allrun -motionOnly:
+# README.md, "Whole cycles"
 LEVELS = {
     "tiny":     dict(n=14, nR=12, dsW=0.6e-3),
     "coarse":   dict(n=14, nR=14, dsW=0.35e-3),
