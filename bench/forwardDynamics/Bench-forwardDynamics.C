@@ -29,15 +29,15 @@ Description
     - eABA: eABAModel::forwardDynamics with the wing joints prescribed;
     - stock: rigidBodyModel::forwardDynamics (ABA, all joints free).
 
-    Trees:
-    - SW (single wing, 4 DoF): Pz, Px on massless bodies, then Rz
-      (flapping) on a massless body and Ry (pitching) carrying the wing
-      (1.5 g, inertia 6e-6, centre of mass at the centre of rotation);
-      prescribed: Rz, Ry.
-    - BW (body-wing, 5 DoF): Pz, Px on massless bodies, Ry carrying the body
-      (1.5 g, inertia 6e-6), then the wing on Rz (massless body), Ry
-      (0.15 g, inertia (1e-8 2e-9 1e-8), centre of mass 47.5 mm along the
-      span); prescribed: the wing's Rz, Ry.
+    Trees: the eABAMeshMotionCoeffs of the cases' own dictionaries (bodies,
+    g, and the prescribed joints: those of imposedMotion), read from
+    cases/<case>/constant/dynamicMeshDict.eABA (path set at build time):
+    - SW (singleWingDrone, 4 DoF): Pz, Px on massless bodies, then Rz
+      (flapping) on a massless body and Ry (pitching) carrying the wing;
+      prescribed: Rz, Ry;
+    - BW (bodyWingDrone, 5 DoF): Pz, Px on massless bodies, Ry carrying the
+      body, then the wing on Rz (massless body), Ry; prescribed: the wing's
+      Rz, Ry.
 
     Run with bench/forwardDynamics/run for the median of 10 repetitions and
     the markdown table.
@@ -49,12 +49,14 @@ Description
 #include "eABAModel.H"
 #include "rigidBodyModelState.H"
 #include "scratchTime.H"
-#include "IStringStream.H"
+#include "imposedMotionList.H"
+#include "IFstream.H"
 
 #include <algorithm>
 #include <cstdlib>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 #include <unistd.h>
 
@@ -68,76 +70,28 @@ namespace
 std::unique_ptr<scratchTime> runTimePtr;
 
 
-const char* singleWingDict = R"(
-bodies
-{
-    heave
-    {
-        type masslessBody; parent root;
-        transform (1 0 0 0 1 0 0 0 1) (0 0 0);
-        joint { type Pz; }
-    }
-    surge
-    {
-        type masslessBody; parent heave;
-        transform (1 0 0 0 1 0 0 0 1) (0 0 0);
-        joint { type Px; }
-    }
-    stroke
-    {
-        type masslessBody; parent surge;
-        transform (1 0 0 0 1 0 0 0 1) (0 0 0);
-        joint { type Rz; }
-    }
-    wing
-    {
-        type rigidBody; parent stroke;
-        mass 1.5e-3; centreOfMass (0 0 0); inertia (6e-6 0 0 6e-6 0 6e-6);
-        transform (1 0 0 0 1 0 0 0 1) (0 0 0);
-        joint { type Ry; }
-    }
-}
-)";
+//- The drone cases' multibody dictionaries (FLAPFOAM_CASES: Make/options)
+const fileName singleWingDict
+(
+    fileName(FLAPFOAM_CASES)/"singleWingDrone/constant/dynamicMeshDict.eABA"
+);
+const fileName bodyWingDict
+(
+    fileName(FLAPFOAM_CASES)/"bodyWingDrone/constant/dynamicMeshDict.eABA"
+);
 
 
-const char* bodyWingDict = R"(
-bodies
+//- The eABAMeshMotionCoeffs of a case's dynamicMeshDict
+dictionary motionCoeffs(const fileName& dynamicMeshDict)
 {
-    heave
+    IFstream is(dynamicMeshDict);
+    if (!is.good())
     {
-        type masslessBody; parent root;
-        transform (1 0 0 0 1 0 0 0 1) (0 0 0);
-        joint { type Pz; }
+        FatalErrorInFunction
+            << "cannot read " << dynamicMeshDict << exit(FatalError);
     }
-    surge
-    {
-        type masslessBody; parent heave;
-        transform (1 0 0 0 1 0 0 0 1) (0 0 0);
-        joint { type Px; }
-    }
-    body
-    {
-        type rigidBody; parent surge;
-        mass 1.5e-3; centreOfMass (0 0 0); inertia (6e-6 0 0 6e-6 0 6e-6);
-        transform (1 0 0 0 1 0 0 0 1) (0 0 0);
-        joint { type Ry; }
-    }
-    stroke
-    {
-        // Wing root hinge on the body's surface (radius = chord)
-        type masslessBody; parent body;
-        transform (1 0 0 0 1 0 0 0 1) (0 0.015 0);
-        joint { type Rz; }
-    }
-    wing
-    {
-        type rigidBody; parent stroke;
-        mass 1.5e-4; centreOfMass (0 0.0475 0); inertia (1e-8 0 0 2e-9 0 1e-8);
-        transform (1 0 0 0 1 0 0 0 1) (0 0 0);
-        joint { type Ry; }
-    }
+    return dictionary(is).subDict("eABAMeshMotionCoeffs");
 }
-)";
 
 
 // One tree with its state and forces, set up once
@@ -148,16 +102,20 @@ struct droneTree
     scalarField tau;
     Field<spatialVector> fx;
 
-    droneTree(const char* dictString, const labelList& prescribed)
+    explicit droneTree(const dictionary& coeffs)
     :
-        model((*runTimePtr)(), dictionary(IStringStream(dictString)())),
+        model((*runTimePtr)(), coeffs),
         state(model),
         tau(model.nDoF(), Zero),
         fx(model.nBodies(), Zero)
     {
-        // rigidBodyModel does not read g (the motion classes do)
-        model.g() = vector(0, 0, -9.81);
-        model.setPrescribed(prescribed);
+        // rigidBodyModel reads neither g nor the imposed motions (the
+        // motion classes do)
+        model.g() = coeffs.get<vector>("g");
+        model.setPrescribed
+        (
+            imposedMotionList(coeffs, model.jointDoF()).joints()
+        );
 
         // A mid-stroke state: all joints moving, wing accelerating, an
         // aerodynamic force on the wing (global frame)
@@ -246,10 +204,10 @@ int main(int argc, char** argv)
     );
 
     // SW: q = (Pz Px Rz Ry), the wing's Rz, Ry prescribed
-    singleWing.reset(new droneTree(singleWingDict, labelList({2, 3})));
+    singleWing.reset(new droneTree(motionCoeffs(singleWingDict)));
 
     // BW: q = (Pz Px Ry Rz Ry), the wing's Rz, Ry prescribed
-    bodyWing.reset(new droneTree(bodyWingDict, labelList({3, 4})));
+    bodyWing.reset(new droneTree(motionCoeffs(bodyWingDict)));
 
     // The minimum of the repetitions as well: the least disturbed by other
     // load on the machine
@@ -258,14 +216,23 @@ int main(int argc, char** argv)
         return *std::min_element(v.begin(), v.end());
     };
 
-    benchmark::RegisterBenchmark("SW_4DoF/eABA", eABA, singleWing.get())
-        ->ComputeStatistics("min", minimum);
-    benchmark::RegisterBenchmark("SW_4DoF/stock", stock, singleWing.get())
-        ->ComputeStatistics("min", minimum);
-    benchmark::RegisterBenchmark("BW_5DoF/eABA", eABA, bodyWing.get())
-        ->ComputeStatistics("min", minimum);
-    benchmark::RegisterBenchmark("BW_5DoF/stock", stock, bodyWing.get())
-        ->ComputeStatistics("min", minimum);
+    // Named after the tree and its number of DoF read from the case
+    for
+    (
+        const auto& named
+      : {std::make_pair("SW_", singleWing.get()),
+         std::make_pair("BW_", bodyWing.get())}
+    )
+    {
+        const std::string tree
+        (
+            named.first + std::to_string(named.second->model.nDoF()) + "DoF"
+        );
+        benchmark::RegisterBenchmark((tree + "/eABA").c_str(), eABA,
+            named.second)->ComputeStatistics("min", minimum);
+        benchmark::RegisterBenchmark((tree + "/stock").c_str(), stock,
+            named.second)->ComputeStatistics("min", minimum);
+    }
 
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv))
