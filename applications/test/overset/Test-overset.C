@@ -45,111 +45,14 @@ Description
 #include "quaternion.H"
 #include "Random.H"
 #include "scratchTime.H"
+#include "oversetTestMeshes.H"
 
 #include <gtest/gtest.h>
 
 #include <memory>
 
 using namespace Foam;
-
-// * * * * * * * * * * * * * * * * Helpers * * * * * * * * * * * * * * * * //
-
-namespace
-{
-
-//- Block of n^3 hexahedra on [0, 1]^3, interior points jittered by up to
-//- jitter cell sizes, then moved by x -> R x + t
-std::unique_ptr<polyMesh> hexBlock
-(
-    const Time& runTime,
-    const word& name,
-    const label n,
-    const scalar jitter,
-    const tensor& R = tensor::I,
-    const vector& t = Zero
-)
-{
-    const scalar h = 1.0/n;
-    Random rnd(1234);
-
-    pointField pts((n + 1)*(n + 1)*(n + 1));
-    auto pid = [n](label i, label j, label k)
-    {
-        return i + (n + 1)*(j + (n + 1)*k);
-    };
-
-    for (label k = 0; k <= n; ++k)
-    {
-        for (label j = 0; j <= n; ++j)
-        {
-            for (label i = 0; i <= n; ++i)
-            {
-                point p(i*h, j*h, k*h);
-                const bool interior =
-                    i > 0 && i < n && j > 0 && j < n && k > 0 && k < n;
-                if (interior)
-                {
-                    p += jitter*h*(2*rnd.sample01<vector>() - vector::one);
-                }
-                pts[pid(i, j, k)] = (R & p) + t;
-            }
-        }
-    }
-
-    const cellModel& hex = cellModel::ref(cellModel::HEX);
-    cellShapeList shapes(n*n*n);
-    label celli = 0;
-    for (label k = 0; k < n; ++k)
-    {
-        for (label j = 0; j < n; ++j)
-        {
-            for (label i = 0; i < n; ++i)
-            {
-                labelList v
-                ({
-                    pid(i, j, k), pid(i+1, j, k),
-                    pid(i+1, j+1, k), pid(i, j+1, k),
-                    pid(i, j, k+1), pid(i+1, j, k+1),
-                    pid(i+1, j+1, k+1), pid(i, j+1, k+1)
-                });
-                shapes[celli++] = cellShape(hex, v);
-            }
-        }
-    }
-
-    return std::unique_ptr<polyMesh>
-    (
-        new polyMesh
-        (
-            IOobject
-            (
-                name,
-                runTime.constant(),
-                runTime,
-                IOobject::NO_READ,
-                IOobject::NO_WRITE,
-                false
-            ),
-            std::move(pts),
-            shapes,
-            faceListList(),
-            wordList(),
-            PtrList<dictionary>(),
-            "walls",
-            "wall"
-        )
-    );
-}
-
-
-//- A rotation that is not close to anything special
-tensor someRotation()
-{
-    return quaternion(normalised(vector(0.3, -0.8, 0.5)), 1.1).R();
-}
-
-} // End anonymous namespace
-
+using namespace oversetTest;
 
 // * * * * * * * * * * * * * * * * * Tests * * * * * * * * * * * * * * * * //
 

@@ -69,6 +69,15 @@ Foam::cellCellStencils::octreeInverseDistance::holeCuttingTypeNames
 const Foam::word
 Foam::cellCellStencils::octreeInverseDistance::stencilPart("oversetStencil");
 
+const Foam::scalar
+Foam::cellCellStencils::octreeInverseDistance::residualMargin(4);
+
+const Foam::scalar
+Foam::cellCellStencils::octreeInverseDistance::radiusTolerance(1e-6);
+
+const Foam::scalar
+Foam::cellCellStencils::octreeInverseDistance::candidateRoundOff(1e-9);
+
 const Foam::word
 Foam::cellCellStencils::octreeInverseDistance::orphanSetName
 (
@@ -336,7 +345,7 @@ void Foam::cellCellStencils::octreeInverseDistance::buildZone
         radius[i] = Foam::sqrt(r2);
     }
 
-    buildBins(zonei);
+    bins_[zonei].build(subMesh.cellCentres(), radius);
 }
 
 
@@ -355,10 +364,7 @@ void Foam::cellCellStencils::octreeInverseDistance::buildCache
     prevRemote_.setSize(nZones);
     procBb_.setSize(nZones);
     cellRadius_.setSize(nZones);
-    binBb_.setSize(nZones);
-    binDivs_.setSize(nZones);
-    binStart_.setSize(nZones);
-    binCells_.setSize(nZones);
+    bins_.setSize(nZones);
     zoneResidual_.setSize(nZones, Zero);
 
     // Voxel maps: refilled at the next update
@@ -518,7 +524,7 @@ void Foam::cellCellStencils::octreeInverseDistance::markHoles
     const pointField& cc = mesh_.cellCentres();
 
     // Deviation from rigid motion (points and centre) and round-off
-    const scalar margin = 4*zoneResidual_[tgtI];
+    const scalar margin = residualMargin*zoneResidual_[tgtI];
 
     // The cells to test (zone cell indices): those the PATCH blocks can
     // reach, or all
@@ -537,7 +543,8 @@ void Foam::cellCellStencils::octreeInverseDistance::markHoles
         // Voxel range of a box holding the cell's bounding box
         const vector r
         (
-            vector::uniform((1 + 1e-6)*radius[i] + margin) + smallVec_
+            vector::uniform((1 + radiusTolerance)*radius[i] + margin)
+          + smallVec_
         );
         const labelVector lo(max(labelVector::zero, src.voxel(cc[celli] - r)));
         const labelVector hi(min(maxIndex, src.voxel(cc[celli] + r)));
@@ -558,6 +565,25 @@ void Foam::cellCellStencils::octreeInverseDistance::markHoles
             allCellTypes[celli] = HOLE;
         }
     }
+}
+
+
+Foam::labelList
+Foam::cellCellStencils::octreeInverseDistance::holeCandidates
+(
+    const label tgtI,
+    const patchVoxelMap& src
+) const
+{
+    // The hole test's margins: the rigid-fit residual (cell centre and
+    // radius) and the tolerance; sqrt(3) turns the boxes of the test into
+    // balls, which rotate into the zone's frame unchanged
+    const scalar m = residualMargin*zoneResidual_[tgtI];
+    const scalar grow =
+        Foam::sqrt(3.0)*(m + cmptMax(cmptMag(smallVec_))) + m
+      + candidateRoundOff*mag(src.bb().span());
+
+    return bins_[tgtI].holeCandidates(src, zoneSearch_[tgtI], grow);
 }
 
 
@@ -1268,10 +1294,7 @@ Foam::cellCellStencils::octreeInverseDistance::octreeInverseDistance
     prevDonor_(),
     cacheNCells_(-1),
     fullReason_("first update"),
-    binBb_(),
-    binDivs_(),
-    binStart_(),
-    binCells_(),
+    bins_(),
     timers_(stepTimers::New(mesh.time())),
     procBb_(),
     prevRemote_(),

@@ -104,6 +104,37 @@ Foam::patchVoxelMap::patchVoxelMap()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::labelVector Foam::patchVoxelMap::voxel
+(
+    const boundBox& bb,
+    const labelVector& nDivs,
+    const point& p
+)
+{
+    return voxelOps::index3(bb, nDivs, p);
+}
+
+
+Foam::label Foam::patchVoxelMap::index
+(
+    const labelVector& nDivs,
+    const labelVector& ijk
+)
+{
+    return voxelOps::index(nDivs, ijk);
+}
+
+
+Foam::labelVector Foam::patchVoxelMap::ijk
+(
+    const labelVector& nDivs,
+    const label v
+)
+{
+    return voxelOps::index3(nDivs, v);
+}
+
+
 Foam::labelVector Foam::patchVoxelMap::blockDivisions
 (
     const labelVector& nDivs
