@@ -22,7 +22,6 @@ License
 
 #include "flightDataFunctionObject.H"
 #include "fvMesh.H"
-#include "eABAMeshMotion.H"
 #include "stepTimers.H"
 #include "addToRunTimeSelectionTable.H"
 #include "IOdictionary.H"
@@ -110,22 +109,23 @@ string firstLine(const std::string& command)
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-const Foam::eABAMeshMotion&
+const Foam::RBD::motionRecord&
 Foam::functionObjects::flightData::findMotion() const
 {
-    const HashTable<const eABAMeshMotion*> solvers
+    const HashTable<const RBD::motionRecord*> records
     (
-        mesh_.lookupClass<eABAMeshMotion>()
+        mesh_.lookupClass<RBD::motionRecord>()
     );
-    if (solvers.size() != 1)
+    if (records.size() != 1)
     {
         FatalErrorInFunction
-            << type() << " " << name() << ": the mesh has " << solvers.size()
-            << " eABAMeshMotion motion solvers; flightData needs exactly one"
+            << type() << " " << name() << ": the mesh has " << records.size()
+            << " multibody motions (" << RBD::motionRecord::typeName
+            << "); flightData needs exactly one"
             << " (dynamicMeshDict: motionSolver eABAMeshMotion)"
             << exit(FatalError);
     }
-    return *solvers.cbegin()();
+    return *records.cbegin()();
 }
 
 
@@ -243,7 +243,7 @@ Foam::functionObjects::flightData::attributes(const scalar startTime) const
 Foam::flightDataFile::row
 Foam::functionObjects::flightData::makeRow(const bool withLoads) const
 {
-    const eABAMeshMotion& m = *motion_;
+    const RBD::motionRecord& m = *motion_;
     const RBD::eABAMotion& model = m.model();
     const RBD::rigidBodyModelState& s = model.state();
     const scalar nan = std::numeric_limits<scalar>::quiet_NaN();
@@ -285,7 +285,7 @@ Foam::functionObjects::flightData::makeRow(const bool withLoads) const
     }
 
     const wordList xyz({"x", "y", "z"});
-    const scalar qRef = 0.5*m.rhoInf()*sqr(Uref_);
+    const scalar qRef = 0.5*rhoInf_*sqr(Uref_);
 
     forAll(bodies_, i)
     {
@@ -363,6 +363,7 @@ Foam::functionObjects::flightData::flightData
 )
 :
     fvMeshFunctionObject(name, runTime, dict),
+    rhoInf_(0),
     Uref_(0),
     motion_(nullptr)
 {
@@ -388,6 +389,26 @@ Foam::functionObjects::flightData::flightData
         {
             file_->append(makeRow(false));
         }
+
+        if (tablesName_.size())
+        {
+            tables_.reset
+            (
+                new flightDataTables
+                (
+                    time_.globalPath()/functionObject::outputPrefix
+                   /tablesName_/time_.timeName(),
+                    *motion_
+                )
+            );
+
+            // The start row of a fresh run; a restart's start row is the
+            // last row of the run it continues (with its load)
+            if (motion_->freshStart())
+            {
+                tables_->append();
+            }
+        }
     }
 }
 
@@ -398,17 +419,19 @@ bool Foam::functionObjects::flightData::read(const dictionary& dict)
 {
     fvMeshFunctionObject::read(dict);
 
+    rhoInf_ = dict.get<scalar>("rhoInf");
     Uref_ = dict.get<scalar>("Uref");
-    if (Uref_ <= 0)
+    if (rhoInf_ <= 0 || Uref_ <= 0)
     {
         FatalIOErrorInFunction(dict)
-            << "Uref " << Uref_ << ": must be positive" << exit(FatalIOError);
+            << "rhoInf " << rhoInf_ << ", Uref " << Uref_
+            << ": both must be positive" << exit(FatalIOError);
     }
+    tablesName_ = dict.getOrDefault<word>("tables", word::null);
 
     motion_ = &findMotion();
-    const eABAMeshMotion& m = *motion_;
-    const wordList loaded(m.loadedBodies());
-    const RBD::eABAMotion& model = m.model();
+    const wordList& loaded = motion_->bodies();
+    const RBD::eABAMotion& model = motion_->model();
 
     const dictionary& coeffs = dict.subDict("coefficients");
     bodies_ = loaded;
@@ -508,6 +531,10 @@ bool Foam::functionObjects::flightData::execute()
     if (Pstream::master())
     {
         file_->append(makeRow(true));
+        if (tables_.valid())
+        {
+            tables_->append();
+        }
     }
     return true;
 }

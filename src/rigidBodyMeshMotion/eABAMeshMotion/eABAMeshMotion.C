@@ -21,12 +21,9 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "eABAMeshMotion.H"
+#include "bodyLoad.H"
 #include "addToRunTimeSelectionTable.H"
 #include "polyMesh.H"
-#include "fvMesh.H"
-#include "volFields.H"
-#include "surfaceFields.H"
-#include "turbulentTransportModel.H"
 #include "stepTimers.H"
 #include "bitSet.H"
 
@@ -75,7 +72,6 @@ Foam::labelList Foam::eABAMeshMotion::zonePoints
 void Foam::eABAMeshMotion::readBodies()
 {
     const dictionary& bodiesDict = coeffDict().subDict("bodies");
-    const polyBoundaryMesh& patches = mesh().boundaryMesh();
 
     // Points already owned by a moving zone
     bitSet owned(mesh().nPoints());
@@ -99,34 +95,10 @@ void Foam::eABAMeshMotion::readBodies()
             continue;
         }
 
-        const word& name = e.keyword();
-        const label bodyID = model_.bodyID(name);
-
-        if (bodyID < 0 || model_.merged(bodyID))
-        {
-            FatalIOErrorInFunction(bodyDict)
-                << "body " << name << " cannot carry patches or a cellZone:"
-                << " it is not a body of the tree (merged bodies move with"
-                << " their master)" << exit(FatalIOError);
-        }
-
+        // The patches are the load's (bodyLoad); the body is listed
         bodyMesh& bm = bodyMeshes_[nBodyMeshes++];
-        bm.name = name;
-        bm.bodyID = bodyID;
-
-        if (hasPatches)
-        {
-            const wordRes patchNames(bodyDict.get<wordRes>("patches"));
-            bm.patchIDs = patches.patchSet(patchNames).sortedToc();
-
-            if (bm.patchIDs.empty())
-            {
-                FatalIOErrorInFunction(bodyDict)
-                    << "patches " << patchNames << " of body " << name
-                    << " match no patch; the mesh has " << patches.names()
-                    << exit(FatalIOError);
-            }
-        }
+        bm.name = e.keyword();
+        bm.bodyID = bodyLoad::treeBodyID(model_, bm.name, bodyDict);
 
         if (hasZone)
         {
@@ -138,7 +110,8 @@ void Foam::eABAMeshMotion::readBodies()
                 if (owned.test(pointi))
                 {
                     FatalIOErrorInFunction(bodyDict)
-                        << "cellZone " << bm.cellZone << " of body " << name
+                        << "cellZone " << bm.cellZone << " of body "
+                        << bm.name
                         << " shares points with another moving zone:"
                         << " component meshes must be separate"
                         << exit(FatalIOError);
@@ -198,61 +171,7 @@ void Foam::eABAMeshMotion::readBackground()
 }
 
 
-void Foam::eABAMeshMotion::calcBodyLoads()
-{
-    fx_ = Zero;
-
-    if (!fluidLoad_)
-    {
-        return;
-    }
-
-    const fvMesh& fvm = refCast<const fvMesh>(mesh());
-    const volScalarField& p = fvm.lookupObject<volScalarField>(pName_);
-    const volVectorField& U = fvm.lookupObject<volVectorField>(UName_);
-
-    const incompressible::turbulenceModel& turb =
-        fvm.lookupObject<incompressible::turbulenceModel>
-        (
-            incompressible::turbulenceModel::propertiesName
-        );
-
-    for (const bodyMesh& bm : bodyMeshes_)
-    {
-        vector force(Zero);
-        vector moment(Zero);
-
-        for (const label patchi : bm.patchIDs)
-        {
-            const vectorField& Sf = fvm.Sf().boundaryField()[patchi];
-            const scalarField& magSf = fvm.magSf().boundaryField()[patchi];
-            const vectorField& Cf = fvm.Cf().boundaryField()[patchi];
-
-            // Pressure on the body (Sf points out of the fluid, into the
-            // body) and the wall shear rho nuEff dU/dn from the patch
-            // normal gradient only
-            const vectorField dF
-            (
-                rhoInf_
-               *(
-                   p.boundaryField()[patchi]*Sf
-                 - turb.nuEff(patchi)*magSf*U.boundaryField()[patchi].snGrad()
-                )
-            );
-
-            force += sum(dF);
-            moment += sum(Cf ^ dF);
-        }
-
-        reduce(force, sumOp<vector>());
-        reduce(moment, sumOp<vector>());
-
-        fx_[bm.bodyID] = spatialVector(moment, force);
-    }
-}
-
-
-Foam::wordList Foam::eABAMeshMotion::loadedBodies() const
+Foam::wordList Foam::eABAMeshMotion::bodyNames() const
 {
     wordList names(bodyMeshes_.size());
     forAll(bodyMeshes_, i)
@@ -260,18 +179,6 @@ Foam::wordList Foam::eABAMeshMotion::loadedBodies() const
         names[i] = bodyMeshes_[i].name;
     }
     return names;
-}
-
-
-Foam::vector Foam::eABAMeshMotion::centreOfMass
-(
-    const spatialTransform& X0,
-    const label bodyID
-) const
-{
-    // X0 maps global to body coordinates: its inverse places the body's
-    // centre of mass in the global frame
-    return X0.inv().transformPoint(model_.I(bodyID).c());
 }
 
 
@@ -303,7 +210,8 @@ void Foam::eABAMeshMotion::updatePoints()
             cmptMultiply
             (
                 backgroundMask_,
-                centreOfMass(model_.X0(b), b) - centreOfMass(model_.X00(b), b)
+                record_->centreOfMass(model_.X0(b), b)
+              - record_->centreOfMass(model_.X00(b), b)
             )
         );
 
@@ -312,65 +220,6 @@ void Foam::eABAMeshMotion::updatePoints()
             curPoints_[pointi] = p0[pointi] + d;
         }
     }
-}
-
-
-void Foam::eABAMeshMotion::openOutput()
-{
-    if (!Pstream::master())
-    {
-        return;
-    }
-
-    const Time& runTime = mesh().time();
-    const fileName dir
-    (
-        runTime.globalPath()/"postProcessing"/typeName/runTime.timeName()
-    );
-    mkDir(dir);
-
-    jointsFile_.reset(new OFstream(dir/"joints.dat"));
-    jointsFile_().precision(12);
-    model_.writeJointsHeader(jointsFile_());
-
-    bodiesFile_.reset(new OFstream(dir/"bodies.dat"));
-    OFstream& os = bodiesFile_();
-    os.precision(12);
-    os  << "# time";
-    for (const bodyMesh& bm : bodyMeshes_)
-    {
-        const word& b = bm.name;
-        os  << ' ' << b << ":cx " << b << ":cy " << b << ":cz"
-            << ' ' << b << ":Fx " << b << ":Fy " << b << ":Fz"
-            << ' ' << b << ":Mx " << b << ":My " << b << ":Mz";
-    }
-    os  << nl << "# c: centre of mass; F: fluid force; M: fluid moment about"
-        << " the centre of mass; global frame" << endl;
-}
-
-
-void Foam::eABAMeshMotion::writeOutput()
-{
-    if (!Pstream::master())
-    {
-        return;
-    }
-
-    model_.writeJointsRow(jointsFile_());
-
-    OFstream& os = bodiesFile_();
-    os  << model_.state().t();
-    for (const bodyMesh& bm : bodyMeshes_)
-    {
-        const vector c(centreOfMass(bm.bodyID));
-        const vector& F = fx_[bm.bodyID].l();
-        const vector M(moment(bm.bodyID, c));
-
-        os  << ' ' << c.x() << ' ' << c.y() << ' ' << c.z()
-            << ' ' << F.x() << ' ' << F.y() << ' ' << F.z()
-            << ' ' << M.x() << ' ' << M.y() << ' ' << M.z();
-    }
-    os  << endl;
 }
 
 
@@ -391,30 +240,26 @@ Foam::eABAMeshMotion::eABAMeshMotion
     ),
     backgroundBodyID_(-1),
     backgroundMask_(Zero),
-    fluidLoad_(coeffDict().getOrDefault<Switch>("fluidLoad", true)),
-    rhoInf_(coeffDict().get<scalar>("rhoInf")),
-    pName_(coeffDict().getOrDefault<word>("p", "p")),
-    UName_(coeffDict().getOrDefault<word>("U", "U")),
     curPoints_(points0()),
     curTimeIndex_(-1),
     tau_(model_.nDoF(), Zero),
     fx_(model_.nBodies(), Zero)
 {
-    if (rhoInf_ <= 0)
-    {
-        FatalIOErrorInFunction(coeffDict())
-            << "rhoInf " << rhoInf_ << ": must be positive"
-            << exit(FatalIOError);
-    }
-
     readBodies();
-    readBackground();
 
     // A fresh start: the exact prescribed state at the start time and
     // consistent accelerations (gravity and restraints: the flow is at
     // rest).  A restart keeps the stored state.
     const bool restart =
         RBD::eABAMotion::stateIO(mesh).typeHeaderOk<IOdictionary>(true);
+
+    record_.reset
+    (
+        new RBD::motionRecord(mesh, model_, fx_, bodyNames(), !restart)
+    );
+
+    readBackground();
+    load_ = bodyLoad::New(mesh, model_, coeffDict());
 
     if (!restart)
     {
@@ -425,15 +270,13 @@ Foam::eABAMeshMotion::eABAMeshMotion
     updatePoints();
 
     model_.writeJointMap(Info);
-    openOutput();
-
-    // The start row of a fresh run; a restart's start row is the last row
-    // of the run it continues (with its load)
-    if (!restart)
-    {
-        writeOutput();
-    }
 }
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
+
+Foam::eABAMeshMotion::~eABAMeshMotion()
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -466,8 +309,8 @@ void Foam::eABAMeshMotion::solve()
         curTimeIndex_ = t.timeIndex();
     }
 
-    // Fluid load of the flow at the start of the step
-    calcBodyLoads();
+    // The loads of the state at the start of the step
+    load_->loads(model_.state(), fx_);
 
     for (label iter = 0; iter < model_.nIter(); ++iter)
     {
@@ -483,11 +326,6 @@ void Foam::eABAMeshMotion::solve()
     }
 
     updatePoints();
-
-    if (newStep)
-    {
-        writeOutput();
-    }
 }
 
 
