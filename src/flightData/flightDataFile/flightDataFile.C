@@ -98,6 +98,136 @@ herr_t collectDatasets
 }
 
 
+//- Write a string attribute (variable length, UTF-8) of an object,
+//- replacing one of the same name
+void writeAttribute
+(
+    const hid_t obj,
+    const word& name,
+    const std::string& value,
+    const fileName& path
+)
+{
+    if (H5Aexists(obj, name.c_str()) > 0)
+    {
+        H5Adelete(obj, name.c_str());
+    }
+    handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+    H5Tset_size(type, H5T_VARIABLE);
+    H5Tset_cset(type, H5T_CSET_UTF8);
+    handle space(H5Screate(H5S_SCALAR), H5Sclose);
+    handle attr
+    (
+        H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT),
+        H5Aclose
+    );
+    check(attr, path, "create attribute " + name);
+    const char* cValue = value.c_str();
+    check(H5Awrite(attr, type, &cValue), path, "write attribute " + name);
+}
+
+
+//- Create the chunked dataset of an entry, extendable along the rows, with
+//- its column names
+void createDataset
+(
+    const hid_t file,
+    const hid_t lcpl,
+    const flightDataFile::entry& e,
+    const fileName& path
+)
+{
+    const int rank = e.columns.empty() ? 1 : 2;
+    const hsize_t nCols = e.columns.empty() ? 1 : e.columns.size();
+    const hsize_t dims[2] = {0, nCols};
+    const hsize_t maxDims[2] = {H5S_UNLIMITED, nCols};
+    const hsize_t chunk[2] = {256, nCols};
+    handle space(H5Screate_simple(rank, dims, maxDims), H5Sclose);
+    handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+    H5Pset_chunk(dcpl, rank, chunk);
+    handle ds
+    (
+        H5Dcreate2
+        (
+            file, e.name.c_str(), H5T_IEEE_F64LE, space, lcpl, dcpl,
+            H5P_DEFAULT
+        ),
+        H5Dclose
+    );
+    check(ds, path, "create dataset " + e.name);
+
+    if (e.columns.size())
+    {
+        string columns;
+        for (const word& c : e.columns)
+        {
+            columns += (columns.empty() ? "" : " ") + c;
+        }
+        writeAttribute(ds, "columns", columns, path);
+    }
+}
+
+
+//- Append the values of an entry as row nRows of its dataset (FatalError
+//- if the dataset has another number of rows or columns)
+void writeRow
+(
+    const hid_t file,
+    const flightDataFile::entry& e,
+    const label nRows,
+    const fileName& path
+)
+{
+    const int rank = e.columns.empty() ? 1 : 2;
+    const hsize_t nCols = e.columns.empty() ? 1 : e.columns.size();
+
+    handle ds(H5Dopen(file, e.name.c_str(), H5P_DEFAULT), H5Dclose);
+    check(ds, path, "open dataset " + e.name);
+
+    {
+        handle space(H5Dget_space(ds), H5Sclose);
+        hsize_t dims[2] = {0, 0};
+        H5Sget_simple_extent_dims(space, dims, nullptr);
+        if
+        (
+            H5Sget_simple_extent_ndims(space) != rank
+         || label(dims[0]) != nRows
+         || (rank == 2 && dims[1] != nCols)
+        )
+        {
+            FatalErrorInFunction
+                << "dataset " << e.name << " of " << path << " has "
+                << label(dims[0]) << " rows of "
+                << label(rank == 2 ? dims[1] : 1) << " columns; expected "
+                << nRows << " of " << label(nCols)
+                << exit(FatalError);
+        }
+    }
+
+    const hsize_t newDims[2] = {hsize_t(nRows + 1), nCols};
+    check(H5Dset_extent(ds, newDims), path, "extend " + e.name);
+
+    handle fileSpace(H5Dget_space(ds), H5Sclose);
+    const hsize_t start[2] = {hsize_t(nRows), 0};
+    const hsize_t count[2] = {1, nCols};
+    H5Sselect_hyperslab
+    (
+        fileSpace, H5S_SELECT_SET, start, nullptr, count, nullptr
+    );
+    handle memSpace(H5Screate_simple(rank, count, nullptr), H5Sclose);
+    check
+    (
+        H5Dwrite
+        (
+            ds, H5T_NATIVE_DOUBLE, memSpace, fileSpace, H5P_DEFAULT,
+            e.values.cdata()
+        ),
+        path,
+        "write a row of " + e.name
+    );
+}
+
+
 //- Open a file read-write (errors of the library silenced: ours name the
 //- file)
 hid_t openFile(const fileName& path)
@@ -214,30 +344,9 @@ void Foam::flightDataFile::setAttributes
     handle file(openFile(path_), H5Fclose);
     check(file, path_, "open");
 
-    handle type(H5Tcopy(H5T_C_S1), H5Tclose);
-    H5Tset_size(type, H5T_VARIABLE);
-    H5Tset_cset(type, H5T_CSET_UTF8);
-    handle space(H5Screate(H5S_SCALAR), H5Sclose);
-
     for (const Tuple2<word, string>& a : attributes)
     {
-        const char* name = a.first().c_str();
-        if (H5Aexists(file, name) > 0)
-        {
-            H5Adelete(file, name);
-        }
-        handle attr
-        (
-            H5Acreate2(file, name, type, space, H5P_DEFAULT, H5P_DEFAULT),
-            H5Aclose
-        );
-        check(attr, path_, "create attribute " + a.first());
-        const char* value = a.second().c_str();
-        check
-        (
-            H5Awrite(attr, type, &value), path_,
-            "write attribute " + a.first()
-        );
+        writeAttribute(file, a.first(), a.second(), path_);
     }
 }
 
@@ -252,20 +361,18 @@ void Foam::flightDataFile::append(const row& r)
 
     for (const entry& e : r)
     {
-        const char* name = e.name.c_str();
-        const int rank = e.columns.empty() ? 1 : 2;
-        const hsize_t nCols = e.columns.empty() ? 1 : e.columns.size();
+        const label nCols = e.columns.empty() ? 1 : e.columns.size();
 
-        if (label(nCols) != e.values.size())
+        if (nCols != e.values.size())
         {
             FatalErrorInFunction
                 << "dataset " << e.name << " of " << path_ << ": "
-                << e.values.size() << " values for " << label(nCols)
+                << e.values.size() << " values for " << nCols
                 << " columns"
                 << abort(FatalError);
         }
 
-        if (H5Lexists(file, name, H5P_DEFAULT) <= 0)
+        if (H5Lexists(file, e.name.c_str(), H5P_DEFAULT) <= 0)
         {
             if (nRows_)
             {
@@ -274,97 +381,10 @@ void Foam::flightDataFile::append(const row& r)
                     << " (" << nRows_ << " rows): a restart must write the"
                     << " same datasets as the run before" << exit(FatalError);
             }
-
-            // Chunked, extendable along the rows
-            const hsize_t dims[2] = {0, nCols};
-            const hsize_t maxDims[2] = {H5S_UNLIMITED, nCols};
-            const hsize_t chunk[2] = {256, nCols};
-            handle space(H5Screate_simple(rank, dims, maxDims), H5Sclose);
-            handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
-            H5Pset_chunk(dcpl, rank, chunk);
-            handle ds
-            (
-                H5Dcreate2
-                (
-                    file, name, H5T_IEEE_F64LE, space, lcpl, dcpl,
-                    H5P_DEFAULT
-                ),
-                H5Dclose
-            );
-            check(ds, path_, "create dataset " + e.name);
-
-            if (e.columns.size())
-            {
-                string columns;
-                for (const word& c : e.columns)
-                {
-                    columns += (columns.empty() ? "" : " ") + c;
-                }
-                handle type(H5Tcopy(H5T_C_S1), H5Tclose);
-                H5Tset_size(type, H5T_VARIABLE);
-                H5Tset_cset(type, H5T_CSET_UTF8);
-                handle aspace(H5Screate(H5S_SCALAR), H5Sclose);
-                handle attr
-                (
-                    H5Acreate2
-                    (
-                        ds, "columns", type, aspace, H5P_DEFAULT, H5P_DEFAULT
-                    ),
-                    H5Aclose
-                );
-                const char* value = columns.c_str();
-                check
-                (
-                    H5Awrite(attr, type, &value), path_,
-                    "write the columns of " + e.name
-                );
-            }
+            createDataset(file, lcpl, e, path_);
         }
 
-        handle ds(H5Dopen(file, name, H5P_DEFAULT), H5Dclose);
-        check(ds, path_, "open dataset " + e.name);
-
-        {
-            handle space(H5Dget_space(ds), H5Sclose);
-            hsize_t dims[2] = {0, 0};
-            H5Sget_simple_extent_dims(space, dims, nullptr);
-            if
-            (
-                H5Sget_simple_extent_ndims(space) != rank
-             || label(dims[0]) != nRows_
-             || (rank == 2 && dims[1] != nCols)
-            )
-            {
-                FatalErrorInFunction
-                    << "dataset " << e.name << " of " << path_ << " has "
-                    << label(dims[0]) << " rows of "
-                    << label(rank == 2 ? dims[1] : 1) << " columns; expected "
-                    << nRows_ << " of " << label(nCols)
-                    << exit(FatalError);
-            }
-        }
-
-        const hsize_t newDims[2] = {hsize_t(nRows_ + 1), nCols};
-        check(H5Dset_extent(ds, newDims), path_, "extend " + e.name);
-
-        handle fileSpace(H5Dget_space(ds), H5Sclose);
-        const hsize_t start[2] = {hsize_t(nRows_), 0};
-        const hsize_t count[2] = {1, nCols};
-        H5Sselect_hyperslab
-        (
-            fileSpace, H5S_SELECT_SET, start, nullptr, count, nullptr
-        );
-        handle memSpace(H5Screate_simple(rank, count, nullptr), H5Sclose);
-        check
-        (
-            H5Dwrite
-            (
-                ds, H5T_NATIVE_DOUBLE, memSpace, fileSpace, H5P_DEFAULT,
-                e.values.cdata()
-            ),
-            path_,
-            "write a row of " + e.name
-        );
+        writeRow(file, e, nRows_, path_);
     }
 
     ++nRows_;

@@ -86,6 +86,44 @@ scalarList components(const tensor& t)
 }
 
 
+//- Append an entry (dataset name, column names, values) to a row
+void addEntry
+(
+    flightDataFile::row& r,
+    const word& name,
+    const wordList& columns,
+    const scalarList& values
+)
+{
+    r.append(flightDataFile::entry{name, columns, values});
+}
+
+
+//- The value of an attribute entry: a word, string or number, as written
+string attributeValue(const dictionary& dict, const word& key)
+{
+    ITstream& is = dict.lookup(key);
+    const token t(is);
+    if (t.isWord())
+    {
+        return t.wordToken();
+    }
+    if (t.isString())
+    {
+        return t.stringToken();
+    }
+    if (!t.isNumber())
+    {
+        FatalIOErrorInFunction(dict)
+            << "attributes: " << key << " must be a word, string or"
+            << " number" << exit(FatalIOError);
+    }
+    OStringStream os;
+    os << t;
+    return os.str();
+}
+
+
 //- The output of a shell command's first line ("" on failure)
 string firstLine(const std::string& command)
 {
@@ -240,50 +278,51 @@ Foam::functionObjects::flightData::attributes(const scalar startTime) const
 }
 
 
-Foam::flightDataFile::row
-Foam::functionObjects::flightData::makeRow(const bool withLoads) const
+void Foam::functionObjects::flightData::addJoints
+(
+    flightDataFile::row& r,
+    const bool withLoads
+) const
 {
-    const RBD::motionRecord& m = *motion_;
-    const RBD::eABAMotion& model = m.model();
+    const RBD::eABAMotion& model = motion_->model();
     const RBD::rigidBodyModelState& s = model.state();
     const scalar nan = std::numeric_limits<scalar>::quiet_NaN();
 
-    flightDataFile::row r;
-    auto add = [&r]
-    (
-        const word& name,
-        const wordList& columns,
-        const scalarList& values
-    )
-    {
-        r.append(flightDataFile::entry{name, columns, values});
-    };
-    add("time", wordList(), scalarList(1, s.t()));
-
     const labelList dofs(identity(model.nDoF()));
-    add("joints/q", indexed("q", dofs), s.q());
-    add("joints/qDot", indexed("qDot", dofs), s.qDot());
-    add("joints/qDdot", indexed("qDdot", dofs), s.qDdot());
+    addEntry(r, "joints/q", indexed("q", dofs), s.q());
+    addEntry(r, "joints/qDot", indexed("qDot", dofs), s.qDot());
+    addEntry(r, "joints/qDdot", indexed("qDdot", dofs), s.qDdot());
 
     const labelList& prescribed = model.prescribed();
     if (prescribed.size())
     {
-        add
+        addEntry
         (
-            "joints/tau", indexed("tau", prescribed),
+            r, "joints/tau", indexed("tau", prescribed),
             withLoads
           ? scalarList(model.prescribedTau())
           : scalarList(prescribed.size(), nan)
         );
-        add
+        addEntry
         (
-            "joints/power", indexed("power", prescribed),
+            r, "joints/power", indexed("power", prescribed),
             withLoads
           ? scalarList(model.prescribedPower(s)())
           : scalarList(prescribed.size(), nan)
         );
     }
+}
 
+
+void Foam::functionObjects::flightData::addBodies
+(
+    flightDataFile::row& r,
+    const bool withLoads
+) const
+{
+    const RBD::motionRecord& m = *motion_;
+    const RBD::eABAMotion& model = m.model();
+    const scalar nan = std::numeric_limits<scalar>::quiet_NaN();
     const wordList xyz({"x", "y", "z"});
     const scalar qRef = 0.5*rhoInf_*sqr(Uref_);
 
@@ -297,11 +336,12 @@ Foam::functionObjects::flightData::makeRow(const bool withLoads) const
         const spatialVector v(model.v(bodyID, c));
         const tensor R(model.X0(bodyID).E().T());
 
-        add(prefix + "position", xyz, components(c));
-        add(prefix + "velocity", xyz, components(v.l()));
-        add(prefix + "angularVelocity", xyz, components(v.w()));
-        add
+        addEntry(r, prefix + "position", xyz, components(c));
+        addEntry(r, prefix + "velocity", xyz, components(v.l()));
+        addEntry(r, prefix + "angularVelocity", xyz, components(v.w()));
+        addEntry
         (
+            r,
             prefix + "orientation",
             wordList
             ({
@@ -318,11 +358,12 @@ Foam::functionObjects::flightData::makeRow(const bool withLoads) const
             F = m.load(bodyID).l();
             M = m.moment(bodyID, m.centreOfMass(momentAbout_[i]));
         }
-        add(prefix + "force", xyz, components(F));
-        add(prefix + "moment", xyz, components(M));
+        addEntry(r, prefix + "force", xyz, components(F));
+        addEntry(r, prefix + "moment", xyz, components(M));
 
-        add
+        addEntry
         (
+            r,
             "coefficients/" + body,
             wordList({"C_xI", "C_zI", "C_m"}),
             scalarList
@@ -333,13 +374,21 @@ Foam::functionObjects::flightData::makeRow(const bool withLoads) const
             })
         );
     }
+}
 
+
+void Foam::functionObjects::flightData::addTimers
+(
+    flightDataFile::row& r,
+    const bool withLoads
+) const
+{
     // The step's timers (maxima over the ranks), if this step's
     const Foam::stepTimers& timers = Foam::stepTimers::New(time_);
     const bool timed =
         withLoads && timers.lastTimeIndex() == time_.timeIndex();
     const wordList timerColumns({"rbd", "overset", "pimple", "total"});
-    scalarList t(timerColumns.size(), nan);
+    scalarList t(timerColumns.size(), std::numeric_limits<scalar>::quiet_NaN());
     if (timed)
     {
         forAll(timerColumns, i)
@@ -347,9 +396,86 @@ Foam::functionObjects::flightData::makeRow(const bool withLoads) const
             t[i] = timers.last(timerColumns[i]);
         }
     }
-    add("timers", timerColumns, t);
+    addEntry(r, "timers", timerColumns, t);
+}
 
+
+Foam::flightDataFile::row
+Foam::functionObjects::flightData::makeRow(const bool withLoads) const
+{
+    flightDataFile::row r;
+    addEntry
+    (
+        r, "time", wordList(), scalarList(1, motion_->model().state().t())
+    );
+    addJoints(r, withLoads);
+    addBodies(r, withLoads);
+    addTimers(r, withLoads);
     return r;
+}
+
+
+void Foam::functionObjects::flightData::readCoefficients
+(
+    const dictionary& coeffs
+)
+{
+    const wordList& loaded = motion_->bodies();
+    const RBD::eABAMotion& model = motion_->model();
+
+    bodies_ = loaded;
+    bodyIDs_.setSize(loaded.size());
+    area_.setSize(loaded.size());
+    chord_.setSize(loaded.size());
+    momentAbout_.setSize(loaded.size());
+
+    for (const word& key : coeffs.toc())
+    {
+        if (!loaded.found(key))
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "coefficients: body " << key << " has no load or mesh;"
+                << " the bodies with one are " << loaded
+                << exit(FatalIOError);
+        }
+    }
+
+    forAll(loaded, i)
+    {
+        const word& body = loaded[i];
+        if (!coeffs.isDict(body))
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "coefficients: no entry for body " << body
+                << " (area, chord): every body of " << loaded
+                << " needs one" << exit(FatalIOError);
+        }
+        const dictionary& bd = coeffs.subDict(body);
+        bodyIDs_[i] = model.bodyID(body);
+        area_[i] = bd.get<scalar>("area");
+        chord_[i] = bd.get<scalar>("chord");
+        if (area_[i] <= 0 || chord_[i] <= 0)
+        {
+            FatalIOErrorInFunction(bd)
+                << "area " << area_[i] << ", chord " << chord_[i]
+                << ": both must be positive" << exit(FatalIOError);
+        }
+        const word about(bd.getOrDefault<word>("momentAbout", body));
+        momentAbout_[i] = -1;
+        for (label b = 0; b < model.nBodies(); ++b)
+        {
+            if (model.name(b) == about)
+            {
+                momentAbout_[i] = b;
+            }
+        }
+        if (momentAbout_[i] < 0)
+        {
+            FatalIOErrorInFunction(bd)
+                << "momentAbout " << about << ": not a body of the model"
+                << exit(FatalIOError);
+        }
+    }
 }
 
 
@@ -430,63 +556,7 @@ bool Foam::functionObjects::flightData::read(const dictionary& dict)
     tablesName_ = dict.getOrDefault<word>("tables", word::null);
 
     motion_ = &findMotion();
-    const wordList& loaded = motion_->bodies();
-    const RBD::eABAMotion& model = motion_->model();
-
-    const dictionary& coeffs = dict.subDict("coefficients");
-    bodies_ = loaded;
-    bodyIDs_.setSize(loaded.size());
-    area_.setSize(loaded.size());
-    chord_.setSize(loaded.size());
-    momentAbout_.setSize(loaded.size());
-
-    for (const word& key : coeffs.toc())
-    {
-        if (!loaded.found(key))
-        {
-            FatalIOErrorInFunction(coeffs)
-                << "coefficients: body " << key << " has no load or mesh;"
-                << " the bodies with one are " << loaded
-                << exit(FatalIOError);
-        }
-    }
-
-    forAll(loaded, i)
-    {
-        const word& body = loaded[i];
-        if (!coeffs.isDict(body))
-        {
-            FatalIOErrorInFunction(coeffs)
-                << "coefficients: no entry for body " << body
-                << " (area, chord): every body of " << loaded
-                << " needs one" << exit(FatalIOError);
-        }
-        const dictionary& bd = coeffs.subDict(body);
-        bodyIDs_[i] = model.bodyID(body);
-        area_[i] = bd.get<scalar>("area");
-        chord_[i] = bd.get<scalar>("chord");
-        if (area_[i] <= 0 || chord_[i] <= 0)
-        {
-            FatalIOErrorInFunction(bd)
-                << "area " << area_[i] << ", chord " << chord_[i]
-                << ": both must be positive" << exit(FatalIOError);
-        }
-        const word about(bd.getOrDefault<word>("momentAbout", body));
-        momentAbout_[i] = -1;
-        for (label b = 0; b < model.nBodies(); ++b)
-        {
-            if (model.name(b) == about)
-            {
-                momentAbout_[i] = b;
-            }
-        }
-        if (momentAbout_[i] < 0)
-        {
-            FatalIOErrorInFunction(bd)
-                << "momentAbout " << about << ": not a body of the model"
-                << exit(FatalIOError);
-        }
-    }
+    readCoefficients(dict.subDict("coefficients"));
 
     extraAttributes_.clear();
     if (dict.isDict("attributes"))
@@ -494,31 +564,10 @@ bool Foam::functionObjects::flightData::read(const dictionary& dict)
         const dictionary& ad = dict.subDict("attributes");
         for (const word& key : ad.toc())
         {
-            // A word, string or number, as written
-            ITstream& is = ad.lookup(key);
-            const token t(is);
-            string value;
-            if (t.isWord())
-            {
-                value = t.wordToken();
-            }
-            else if (t.isString())
-            {
-                value = t.stringToken();
-            }
-            else if (t.isNumber())
-            {
-                OStringStream os;
-                os << t;
-                value = os.str();
-            }
-            else
-            {
-                FatalIOErrorInFunction(ad)
-                    << "attributes: " << key << " must be a word, string or"
-                    << " number" << exit(FatalIOError);
-            }
-            extraAttributes_.append(Tuple2<word, string>(key, value));
+            extraAttributes_.append
+            (
+                Tuple2<word, string>(key, attributeValue(ad, key))
+            );
         }
     }
 
