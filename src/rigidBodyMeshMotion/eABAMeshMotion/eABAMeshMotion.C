@@ -246,21 +246,21 @@ Foam::eABAMeshMotion::eABAMeshMotion
     fx_(model_.nBodies(), Zero)
 {
     readBodies();
+    readBackground();
+    load_ = bodyLoad::New(mesh, model_, coeffDict());
 
-    // A fresh start: the exact prescribed state at the start time and
-    // consistent accelerations (gravity and restraints: the flow is at
-    // rest).  A restart keeps the stored state.
     const bool restart =
         RBD::eABAMotion::stateIO(mesh).typeHeaderOk<IOdictionary>(true);
 
+    // The model, its bodies and their loads for the output
     record_.reset
     (
         new RBD::motionRecord(mesh, model_, fx_, bodyNames(), !restart)
     );
 
-    readBackground();
-    load_ = bodyLoad::New(mesh, model_, coeffDict());
-
+    // A fresh start: the exact prescribed state at the start time and
+    // consistent accelerations (gravity and restraints: the flow is at
+    // rest).  A restart keeps the stored state.
     if (!restart)
     {
         model_.state().t() = mesh.time().value();
@@ -302,8 +302,7 @@ void Foam::eABAMeshMotion::solve()
     }
 
     // Once per time step: store the state of the previous time
-    const bool newStep = (curTimeIndex_ != t.timeIndex());
-    if (newStep)
+    if (curTimeIndex_ != t.timeIndex())
     {
         model_.newTime();
         curTimeIndex_ = t.timeIndex();
