@@ -94,19 +94,39 @@ void Foam::timedOversetFvMesh::correctCoupledPatches()
 }
 
 
+bool Foam::timedOversetFvMesh::readTimeWait() const
+{
+    IOobject dictHeader
+    (
+        "dynamicMeshDict",
+        thisDb().time().constant(),
+        thisDb(),
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+    if (!dictHeader.typeHeaderOk<IOdictionary>(false, false))
+    {
+        return true;
+    }
+    return IOdictionary(dictHeader).getOrDefault<bool>("timeWait", true);
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::timedOversetFvMesh::timedOversetFvMesh(const IOobject& io)
 :
     dynamicOversetFvMesh(io),
     timers_(stepTimers::New(io.time())),
-    updating_(false)
+    updating_(false),
+    timeWait_(Pstream::parRun() && readTimeWait())
 {
     // Register the parts in the order of a step, for the file header
     timers_.add(movePointsPart, 0);
     timers_.add(addressingPart, 0);
     timers_.add(interpolatePart, 0);
-    if (Pstream::parRun())
+    if (timeWait_)
     {
         timers_.add(waitPart, 0);
     }
@@ -178,7 +198,7 @@ bool Foam::timedOversetFvMesh::update()
         }
     }
 
-    if (Pstream::parRun())
+    if (timeWait_)
     {
         stepTimers::scope timer(timers_, waitPart);
         returnReduce(true, andOp<bool>());

@@ -35,11 +35,71 @@ Description
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::cellCellStencils::octreeInverseDistance::exchangePatchVoxels
+Foam::labelListList
+Foam::cellCellStencils::octreeInverseDistance::patchVoxelsFor
 (
-    const List<treeBoundBoxList>& patchBb,
-    const List<labelVector>& patchDivisions
+    const label proci
 )
+{
+    const label nZones = zoneSearch_.size();
+    labelListList send(nZones);
+
+    for (label zonei = 0; zonei < nZones; ++zonei)
+    {
+        const labelList& voxels = patchVoxels_[zonei];
+        if (voxels.empty())
+        {
+            continue;
+        }
+
+        // The cached boxes of that rank's parts of the other zones, at the
+        // current pose, grown by the tolerance the hole test adds
+        treeBoundBoxList tgtBbs;
+        for (label tgti = 0; tgti < nZones; ++tgti)
+        {
+            if (tgti != zonei)
+            {
+                treeBoundBox bb
+                (
+                    zoneSearch_[tgti].toCurrent(procBb_[tgti][proci])
+                );
+                if (!bb.empty())
+                {
+                    bb.min() -= smallVec_;
+                    bb.max() += smallVec_;
+                    tgtBbs.append(bb);
+                }
+            }
+        }
+        if (tgtBbs.empty())
+        {
+            continue;
+        }
+
+        DynamicList<label> sendVoxels;
+        for (const label v : voxels)
+        {
+            treeBoundBox voxelBb(localVoxels_[zonei].voxelBox(v));
+            // Round-off of index3 at the voxel faces
+            voxelBb.inflate(1e-6);
+
+            for (const treeBoundBox& tgtBb : tgtBbs)
+            {
+                if (tgtBb.overlaps(voxelBb))
+                {
+                    sendVoxels.append(v);
+                    break;
+                }
+            }
+        }
+        nVoxelsSent_ += sendVoxels.size();
+        send[zonei].transfer(sendVoxels);
+    }
+    return send;
+}
+
+
+void Foam::cellCellStencils::octreeInverseDistance::exchangePatchVoxels()
 {
     const label nZones = zoneSearch_.size();
     const label myProci = Pstream::myProcNo();
@@ -47,83 +107,26 @@ void Foam::cellCellStencils::octreeInverseDistance::exchangePatchVoxels
     // Clear last step's remote voxels, in this step's grids
     for (label zonei = 0; zonei < nZones; ++zonei)
     {
-        remoteVoxels_[zonei].reset(patchBb[zonei][0], patchDivisions[zonei]);
+        remoteVoxels_[zonei].reset(ws_.patchBb[zonei][0], ws_.patchDivs[zonei]);
     }
 
-    // Send each rank the PATCH voxels of zone z that meet its current box
-    // of another zone (grown by the tolerance the hole test adds)
+    // Send each rank the PATCH voxels that may cut its parts of the zones
     PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
-
     for (label proci = 0; proci < Pstream::nProcs(); ++proci)
     {
-        if (proci == myProci)
+        if (proci != myProci)
         {
-            continue;
-        }
-
-        labelListList send(nZones);
-        bool any = false;
-
-        for (label zonei = 0; zonei < nZones; ++zonei)
-        {
-            const labelList& voxels = patchVoxels_[zonei];
-            if (voxels.empty())
+            const labelListList send(patchVoxelsFor(proci));
+            bool any = false;
+            for (const labelList& voxels : send)
             {
-                continue;
+                any = any || voxels.size();
             }
-
-            treeBoundBoxList tgtBbs;
-            for (label tgti = 0; tgti < nZones; ++tgti)
+            if (any)
             {
-                if (tgti != zonei)
-                {
-                    // The cached box of that rank's part, at the current
-                    // pose
-                    treeBoundBox bb
-                    (
-                        zoneSearch_[tgti].toCurrent(procBb_[tgti][proci])
-                    );
-                    if (!bb.empty())
-                    {
-                        bb.min() -= smallVec_;
-                        bb.max() += smallVec_;
-                        tgtBbs.append(bb);
-                    }
-                }
+                UOPstream os(proci, pBufs);
+                os << send;
             }
-            if (tgtBbs.empty())
-            {
-                continue;
-            }
-
-            DynamicList<label> sendVoxels;
-            for (const label v : voxels)
-            {
-                treeBoundBox voxelBb(localVoxels_[zonei].voxelBox(v));
-                // Round-off of index3 at the voxel faces
-                voxelBb.inflate(1e-6);
-
-                for (const treeBoundBox& tgtBb : tgtBbs)
-                {
-                    if (tgtBb.overlaps(voxelBb))
-                    {
-                        sendVoxels.append(v);
-                        break;
-                    }
-                }
-            }
-            if (sendVoxels.size())
-            {
-                nVoxelsSent_ += sendVoxels.size();
-                send[zonei].transfer(sendVoxels);
-                any = true;
-            }
-        }
-
-        if (any)
-        {
-            UOPstream os(proci, pBufs);
-            os << send;
         }
     }
 
@@ -145,15 +148,40 @@ void Foam::cellCellStencils::octreeInverseDistance::exchangePatchVoxels
 
         forAll(recv, zonei)
         {
-            if (recv[zonei].empty())
-            {
-                continue;
-            }
-
-            patchVoxelMap& map = remoteVoxels_[zonei];
             for (const label v : recv[zonei])
             {
-                map.setPatchVoxel(v);
+                remoteVoxels_[zonei].setPatchVoxel(v);
+            }
+        }
+    }
+}
+
+
+void Foam::cellCellStencils::octreeInverseDistance::answerQueries
+(
+    const pointField& points,
+    const labelList& zones,
+    const labelList& seeds,
+    labelList& donors,
+    labelList& found
+) const
+{
+    donors.setSize(points.size());
+    donors = -1;
+    found.setSize(points.size());
+    found = -1;
+    forAll(points, i)
+    {
+        const label srci = zones[i];
+        const label subCelli =
+            zoneSearch_[srci].findCell(points[i], seeds[i]);
+        if (subCelli != -1)
+        {
+            found[i] = subCelli;
+            const label celli = zoneParts_[srci].cellMap()[subCelli];
+            if (ws_.holeTypes[celli] != HOLE)
+            {
+                donors[i] = ws_.globalCells.toGlobal(celli);
             }
         }
     }
@@ -162,11 +190,7 @@ void Foam::cellCellStencils::octreeInverseDistance::exchangePatchVoxels
 
 void Foam::cellCellStencils::octreeInverseDistance::findRemoteDonors
 (
-    const labelUList& cells,
-    const globalIndex& globalCells,
-    const labelList& allCellTypes,
-    labelListList& allStencil,
-    labelList& allDonor
+    const labelUList& cells
 )
 {
     const label nZones = zoneSearch_.size();
@@ -182,42 +206,49 @@ void Foam::cellCellStencils::octreeInverseDistance::findRemoteDonors
     DynamicList<label> qProc;
     DynamicList<point> qPoint;
     DynamicList<label> qSeed;
-    List<DynamicList<label>> sendQueries(nProcs);
-
-    for (const label celli : cells)
+    labelListList subMap(nProcs);
     {
-        const label tgti = zoneID[celli];
-
-        for (label srci = 0; srci < nZones; ++srci)
+        List<DynamicList<label>> sendQueries(nProcs);
+        for (const label celli : cells)
         {
-            // Only a donor zone better than the one found can change it
-            if
-            (
-                srci == tgti
-             || (
-                    allDonor[celli] != -1
-                 && !betterDonor(tgti, allDonor[celli], srci)
+            const label tgti = zoneID[celli];
+            const label donor = ws_.donorZone[celli];
+
+            for (label srci = 0; srci < nZones; ++srci)
+            {
+                // Only a donor zone better than the one found can change it
+                if
+                (
+                    srci == tgti
+                 || (donor != -1 && !betterDonor(tgti, donor, srci))
                 )
-            )
-            {
-                continue;
-            }
-
-            const point p0(zoneSearch_[srci].toReference(cc[celli]));
-            const labelPair& prev = prevRemote_[srci][celli];
-
-            for (label proci = 0; proci < nProcs; ++proci)
-            {
-                if (proci != myProci && procBb_[srci][proci].contains(p0))
                 {
-                    sendQueries[proci].append(qCell.size());
-                    qCell.append(celli);
-                    qZone.append(srci);
-                    qProc.append(proci);
-                    qPoint.append(p0);
-                    qSeed.append(prev.first() == proci ? prev.second() : -1);
+                    continue;
+                }
+
+                const point p0(zoneSearch_[srci].toReference(cc[celli]));
+                const labelPair& prev = prevRemote_[srci][celli];
+
+                for (label proci = 0; proci < nProcs; ++proci)
+                {
+                    if (proci != myProci && procBb_[srci][proci].contains(p0))
+                    {
+                        sendQueries[proci].append(qCell.size());
+                        qCell.append(celli);
+                        qZone.append(srci);
+                        qProc.append(proci);
+                        qPoint.append(p0);
+                        qSeed.append
+                        (
+                            prev.first() == proci ? prev.second() : -1
+                        );
+                    }
                 }
             }
+        }
+        forAll(sendQueries, proci)
+        {
+            subMap[proci].transfer(sendQueries[proci]);
         }
     }
 
@@ -225,14 +256,8 @@ void Foam::cellCellStencils::octreeInverseDistance::findRemoteDonors
     nQueriesSent_ += nQueries;
 
     // The map: send the queries, answers come back by reverseDistribute
-    labelListList subMap(nProcs);
-    forAll(sendQueries, proci)
-    {
-        subMap[proci].transfer(sendQueries[proci]);
-    }
     labelList recvSizes;
     Pstream::exchangeSizes(subMap, recvSizes);
-
     labelListList constructMap(nProcs);
     label constructSize = 0;
     forAll(constructMap, proci)
@@ -254,25 +279,9 @@ void Foam::cellCellStencils::octreeInverseDistance::findRemoteDonors
     map.distribute(zones);
     map.distribute(seeds);
 
-    // Answer the other ranks' queries: the local cell of the donor zone
-    // holding the point (the next seed), and the donor if not a hole
-    labelList donors(constructSize, -1);
-    labelList found(constructSize, -1);
-    forAll(points, i)
-    {
-        const label srci = zones[i];
-        const label subCelli =
-            zoneSearch_[srci].findCell(points[i], seeds[i]);
-        if (subCelli != -1)
-        {
-            found[i] = subCelli;
-            const label celli = zoneParts_[srci].cellMap()[subCelli];
-            if (allCellTypes[celli] != HOLE)
-            {
-                donors[i] = globalCells.toGlobal(celli);
-            }
-        }
-    }
+    labelList donors;
+    labelList found;
+    answerQueries(points, zones, seeds, donors, found);
     map.reverseDistribute(nQueries, donors);
     map.reverseDistribute(nQueries, found);
 
@@ -289,12 +298,12 @@ void Foam::cellCellStencils::octreeInverseDistance::findRemoteDonors
         if
         (
             donors[i] != -1
-         && betterDonor(zoneID[celli], allDonor[celli], srci)
+         && betterDonor(zoneID[celli], ws_.donorZone[celli], srci)
         )
         {
-            allStencil[celli].setSize(1);
-            allStencil[celli][0] = donors[i];
-            allDonor[celli] = srci;
+            ws_.stencil[celli].setSize(1);
+            ws_.stencil[celli][0] = donors[i];
+            ws_.donorZone[celli] = srci;
         }
     }
 }

@@ -253,13 +253,6 @@ Foam::treeBoundBox Foam::zoneDonorSearch::toCurrent
 }
 
 
-void Foam::zoneDonorSearch::setTransform(const tensor& R, const vector& t)
-{
-    R_ = R;
-    c_ = (R_ & c0_) + t;
-}
-
-
 Foam::label Foam::zoneDonorSearch::findCellOctree(const point& p0) const
 {
     if (!bb_.contains(p0))

@@ -19,52 +19,102 @@ License
     You should have received a copy of the GNU General Public License
     along with flapFoam (COPYING).  If not, see <http://www.gnu.org/licenses/>.
 
+
 Description
-    octreeInverseDistance: the incremental donor search: donors only for the
-    cells whose donors matter (need one, border a hole, or are reached by
-    the fringe walk).
+    octreeInverseDistance: the donor search and the fringe.  Donors only for
+    the cells whose donors matter (need one, border a hole, or are reached
+    by the fringe walk), or for every cell (full update).
 
 \*---------------------------------------------------------------------------*/
 
 #include "octreeInverseDistanceCellCellStencil.H"
-#include "globalIndex.H"
 #include "syncTools.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+void Foam::cellCellStencils::octreeInverseDistance::findDonors
+(
+    const labelUList& cells
+)
+{
+    const labelList& zoneID = this->zoneID();
+    const pointField& cc = mesh_.cellCentres();
+    const labelListList& cellCells = mesh_.cellCells();
+
+    nDonorSearched_ += cells.size();
+
+    forAll(zoneSearch_, srcI)
+    {
+        const zoneDonorSearch& search = zoneSearch_[srcI];
+        const labelList& srcCellMap = zoneParts_[srcI].cellMap();
+        labelList& prev = prevDonor_[srcI];
+
+        for (const label celli : cells)
+        {
+            const label tgtI = zoneID[celli];
+            if (tgtI == srcI)
+            {
+                continue;
+            }
+
+            // Seed: the previous donor, else a face neighbour's donor
+            label seed = prev[celli];
+            if (seed < 0)
+            {
+                for (const label nbr : cellCells[celli])
+                {
+                    if (prev[nbr] >= 0)
+                    {
+                        seed = prev[nbr];
+                        break;
+                    }
+                }
+            }
+
+            const label srcCelli =
+                search.findCell(search.toReference(cc[celli]), seed);
+            prev[celli] = srcCelli;
+
+            if
+            (
+                srcCelli != -1
+             && ws_.holeTypes[srcCellMap[srcCelli]] != HOLE
+             && betterDonor(tgtI, ws_.donorZone[celli], srcI)
+            )
+            {
+                ws_.stencil[celli].setSize(1);
+                ws_.stencil[celli][0] =
+                    ws_.globalCells.toGlobal(srcCellMap[srcCelli]);
+                ws_.donorZone[celli] = srcI;
+            }
+        }
+    }
+}
+
+
 void Foam::cellCellStencils::octreeInverseDistance::searchDonors
 (
     const labelUList& cells,
-    const bool local,
-    const globalIndex& globalCells,
-    const labelList& allCellTypes,
-    labelListList& allStencil,
-    labelList& allDonor,
-    bitSet& queried
+    const bool local
 )
 {
     if (local)
     {
-        findDonors(cells, globalCells, allCellTypes, allStencil, allDonor);
+        findDonors(cells);
     }
     if (Pstream::parRun())
     {
-        findRemoteDonors
-        (
-            cells, globalCells, allCellTypes, allStencil, allDonor
-        );
+        findRemoteDonors(cells);
     }
-    queried.set(cells);
+    ws_.queried.set(cells);
 }
 
 
 Foam::labelList
-Foam::cellCellStencils::octreeInverseDistance::donorCandidates
-(
-    const labelList& allCellTypes,
-    const bitSet& isOversetPatchCell
-) const
+Foam::cellCellStencils::octreeInverseDistance::donorCandidates() const
 {
+    const labelList& allCellTypes = ws_.cellTypes;
+    const bitSet& isOversetPatchCell = ws_.isOversetPatchCell;
     const labelList& own = mesh_.faceOwner();
     const labelList& nei = mesh_.faceNeighbour();
     const label nInternal = mesh_.nInternalFaces();
@@ -123,20 +173,12 @@ Foam::cellCellStencils::octreeInverseDistance::donorCandidates
 
 void Foam::cellCellStencils::octreeInverseDistance::walkFrontResolved
 (
-    const bool localDone,
-    const globalIndex& globalCells,
-    const labelList& holeTypes,
-    const labelList& floodTypes,
-    labelList& allCellTypes,
-    labelListList& allStencil,
-    labelList& allDonor,
-    scalarField& allWeight,
-    bitSet& queried
+    const bool localDone
 )
 {
     while (true)
     {
-        walkFront(layerRelax_, allStencil, allCellTypes, allWeight);
+        walkFront(layerRelax_, ws_.stencil, ws_.cellTypes, ws_.weight);
 
         if (localDone && !Pstream::parRun())
         {
@@ -146,9 +188,13 @@ void Foam::cellCellStencils::octreeInverseDistance::walkFrontResolved
         // Cells whose type the walk set (from their stencil or its
         // absence) that were not searched for donors
         DynamicList<label> unresolved;
-        forAll(allCellTypes, celli)
+        forAll(ws_.cellTypes, celli)
         {
-            if (allCellTypes[celli] != floodTypes[celli] && !queried[celli])
+            if
+            (
+                ws_.cellTypes[celli] != ws_.floodTypes[celli]
+             && !ws_.queried[celli]
+            )
             {
                 unresolved.append(celli);
             }
@@ -159,20 +205,11 @@ void Foam::cellCellStencils::octreeInverseDistance::walkFrontResolved
             return;
         }
 
-        searchDonors
-        (
-            unresolved,
-            !localDone,
-            globalCells,
-            holeTypes,
-            allStencil,
-            allDonor,
-            queried
-        );
+        searchDonors(unresolved, !localDone);
 
         // Again from the flood-filled types
-        allCellTypes = floodTypes;
-        allWeight = Zero;
+        ws_.cellTypes = ws_.floodTypes;
+        ws_.weight = Zero;
     }
 }
 

@@ -1,0 +1,255 @@
+/*---------------------------------------------------------------------------*\
+  flapFoam: free-flight simulation of flapping-wing drones on OpenFOAM v1912
+-------------------------------------------------------------------------------
+    Copyright (C) 2025-2026 flapFoam developers
+-------------------------------------------------------------------------------
+License
+    This file is part of flapFoam, derived from OpenFOAM.
+
+    flapFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by
+    the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    flapFoam is distributed in the hope that it will be useful, but WITHOUT
+    ANY WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License
+    along with flapFoam (COPYING).  If not, see <http://www.gnu.org/licenses/>.
+
+
+Description
+    octreeInverseDistance: the patch voxel maps and the hole cutting.  The
+    hole test only for the cells the PATCH voxels can reach (bins of each
+    zone's cells in the zone's own frame, Foam::cellBins).
+
+\*---------------------------------------------------------------------------*/
+
+#include "octreeInverseDistanceCellCellStencil.H"
+#include "oversetFvPatch.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+bool Foam::cellCellStencils::octreeInverseDistance::voxelsCurrent
+(
+    const label zonei,
+    const boundBox& bb,
+    const labelVector& nDivs
+) const
+{
+    const patchVoxelMap& map = localVoxels_[zonei];
+    if
+    (
+        !map.allocated()
+     || map.nDivs() != nDivs
+     || map.bb() != bb
+     || patchFilledSmallVec_[zonei] != smallVec_
+    )
+    {
+        return false;
+    }
+
+    const labelList& pointMap = zoneParts_[zonei].pointMap();
+    const pointField& points = mesh_.points();
+    const pointField& filledPoints = patchFilledPoints_[zonei];
+
+    if (filledPoints.size() != pointMap.size())
+    {
+        return false;
+    }
+    forAll(pointMap, i)
+    {
+        if (points[pointMap[i]] != filledPoints[i])
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+
+Foam::labelVector
+Foam::cellCellStencils::octreeInverseDistance::voxelDivisions() const
+{
+    if (useDivisions_)
+    {
+        return divisions_;
+    }
+
+    // As the stock stencil: about one voxel a cell
+    const label nD = mesh_.nGeometricD();
+    const scalar n = scalar(mesh_.nCells());
+    const label nDivs =
+        nD == 1 ? label(n) : nD == 2 ? label(Foam::sqrt(n))
+      : label(Foam::cbrt(n));
+    const labelVector& dirs = mesh_.geometricD();
+    labelVector divs;
+    for (direction d = 0; d < 3; ++d)
+    {
+        divs[d] = (dirs[d] == -1 ? 1 : nDivs);
+    }
+    return divs;
+}
+
+
+void Foam::cellCellStencils::octreeInverseDistance::markZoneBoundaries
+(
+    const label zonei,
+    const bool fillVoxels
+)
+{
+    // Voxels of the zone's boundary faces at the current pose: the zones
+    // share no faces, so the zone's sub-mesh boundary is the mesh boundary
+    // restricted to the zone (the sub-mesh's exposed-face patch is empty)
+
+    const labelList& zoneID = this->zoneID();
+    const fvBoundaryMesh& pbm = mesh_.boundary();
+    const pointField& points = mesh_.points();
+    patchVoxelMap& map = localVoxels_[zonei];
+
+    // Two passes, as the stock stencil: proper patches, then overset
+    // patches on top
+    for (const bool oversetPass : {false, true})
+    {
+        for (const fvPatch& fvp : pbm)
+        {
+            const bool isOverset = isA<oversetFvPatch>(fvp);
+            const bool proper = !fvPatch::constraintType(fvp.type());
+
+            if (oversetPass ? !isOverset : !proper)
+            {
+                continue;
+            }
+
+            const labelList& fc = fvp.faceCells();
+            const polyPatch& pp = fvp.patch();
+
+            forAll(pp, i)
+            {
+                if (zoneID[fc[i]] != zonei)
+                {
+                    continue;
+                }
+                ws_.patchTypes[fc[i]] =
+                    oversetPass ? patchCellType::OVERSET : patchCellType::PATCH;
+
+                if (!fillVoxels)
+                {
+                    continue;
+                }
+
+                boundBox faceBb(points, pp[i], false);
+                faceBb.min() -= smallVec_;
+                faceBb.max() += smallVec_;
+
+                if (oversetPass)
+                {
+                    map.fillOversetFace(faceBb);
+                }
+                else
+                {
+                    map.fillPatchFace(faceBb);
+                }
+            }
+        }
+    }
+
+    if (fillVoxels)
+    {
+        // What the map was filled with
+        patchFilledSmallVec_[zonei] = smallVec_;
+
+        const labelList& pointMap = zoneParts_[zonei].pointMap();
+        pointField& filledPoints = patchFilledPoints_[zonei];
+        filledPoints.setSize(pointMap.size());
+        forAll(pointMap, i)
+        {
+            filledPoints[i] = points[pointMap[i]];
+        }
+    }
+}
+
+
+void Foam::cellCellStencils::octreeInverseDistance::markHoles
+(
+    const patchVoxelMap& src,
+    const label tgtI
+)
+{
+    if (src.noPatch() || !src.bb().overlaps(ws_.patchBb[tgtI][0]))
+    {
+        return;
+    }
+
+    const labelVector maxIndex(src.nDivs() - labelVector::one);
+    const labelList& cellMap = zoneParts_[tgtI].cellMap();
+    const scalarField& radius = cellRadius_[tgtI];
+    const pointField& cc = mesh_.cellCentres();
+
+    // Deviation from rigid motion (points and centre) and round-off
+    const scalar margin = residualMargin*zoneResidual_[tgtI];
+
+    // The cells to test (zone cell indices): those the PATCH blocks can
+    // reach, or all
+    const labelList tested
+    (
+        ws_.incremental
+      ? holeCandidates(tgtI, src)
+      : identity(cellMap.size())
+    );
+    nHoleTested_ += tested.size();
+
+    for (const label i : tested)
+    {
+        const label celli = cellMap[i];
+
+        // Voxel range of a box holding the cell's bounding box
+        const vector r
+        (
+            vector::uniform((1 + radiusTolerance)*radius[i] + margin)
+          + smallVec_
+        );
+        const labelVector lo(max(labelVector::zero, src.voxel(cc[celli] - r)));
+        const labelVector hi(min(maxIndex, src.voxel(cc[celli] + r)));
+
+        // Any block holding a PATCH voxel?
+        if (!src.meetsPatchRange(lo, hi) || !src.anyPatchBlock(lo, hi))
+        {
+            continue;
+        }
+
+        // The stock test
+        treeBoundBox cBb(cellBb(mesh_, celli));
+        cBb.min() -= smallVec_;
+        cBb.max() += smallVec_;
+
+        if (src.overlapsPatch(cBb))
+        {
+            ws_.cellTypes[celli] = HOLE;
+        }
+    }
+}
+
+
+Foam::labelList
+Foam::cellCellStencils::octreeInverseDistance::holeCandidates
+(
+    const label tgtI,
+    const patchVoxelMap& src
+) const
+{
+    // The hole test's margins: the rigid-fit residual (cell centre and
+    // radius) and the tolerance; sqrt(3) turns the boxes of the test into
+    // balls, which rotate into the zone's frame unchanged
+    const scalar m = residualMargin*zoneResidual_[tgtI];
+    const scalar grow =
+        Foam::sqrt(3.0)*(m + cmptMax(cmptMag(smallVec_))) + m
+      + candidateRoundOff*mag(src.bb().span());
+
+    return bins_[tgtI].holeCandidates(src, zoneSearch_[tgtI], grow);
+}
+
+
+// ************************************************************************* //
