@@ -70,7 +70,7 @@ Foam::cellBins::cellBins()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::cellBins::build
+void Foam::cellBins::setGrid
 (
     const UList<point>& centres,
     const UList<scalar>& radius,
@@ -118,6 +118,21 @@ void Foam::cellBins::build
     for (direction d = 0; d < 3; ++d)
     {
         nDivs_[d] = max(label(1), min(label(span[d]/h), s.maxDivisions));
+    }
+}
+
+
+void Foam::cellBins::build
+(
+    const UList<point>& centres,
+    const UList<scalar>& radius,
+    const settings& s
+)
+{
+    setGrid(centres, radius, s);
+    if (!nCells_)
+    {
+        return;
     }
 
     // Compressed rows: count the cells of each bin, then fill

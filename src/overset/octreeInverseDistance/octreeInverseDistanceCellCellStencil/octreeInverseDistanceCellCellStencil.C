@@ -91,36 +91,40 @@ Foam::cellCellStencils::octreeInverseDistance::emptyStencilField
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+template<class EnumType>
+EnumType Foam::cellCellStencils::octreeInverseDistance::readChoice
+(
+    const word& key,
+    const Enum<EnumType>& names,
+    const EnumType deflt
+) const
+{
+    const word name(dict_.getOrDefault<word>(key, names[deflt]));
+    if (!names.found(name))
+    {
+        FatalIOErrorInFunction(dict_)
+            << key << " " << name << " unknown: must be one of "
+            << names.sortedToc() << exit(FatalIOError);
+    }
+    return names[name];
+}
+
+
 void Foam::cellCellStencils::octreeInverseDistance::readSettings()
 {
-    const word searchName
-    (
-        dict_.getOrDefault<word>("search", searchTypeNames[searchType::cached])
-    );
-    if (!searchTypeNames.found(searchName))
-    {
-        FatalIOErrorInFunction(dict_)
-            << "search " << searchName << " unknown: must be one of "
-            << searchTypeNames.sortedToc() << exit(FatalIOError);
-    }
-    search_ = searchTypeNames[searchName];
-
-    const word holeCuttingName
-    (
-        dict_.getOrDefault<word>
+    search_ = readChoice("search", searchTypeNames, searchType::cached);
+    holeCutting_ =
+        readChoice
         (
-            "holeCutting",
-            holeCuttingTypeNames[holeCuttingType::incremental]
-        )
-    );
-    if (!holeCuttingTypeNames.found(holeCuttingName))
-    {
-        FatalIOErrorInFunction(dict_)
-            << "holeCutting " << holeCuttingName << " unknown: must be one of "
-            << holeCuttingTypeNames.sortedToc() << exit(FatalIOError);
-    }
-    holeCutting_ = holeCuttingTypeNames[holeCuttingName];
+            "holeCutting", holeCuttingTypeNames, holeCuttingType::incremental
+        );
+    readNumbers();
+    readNoHoleCut();
+}
 
+
+void Foam::cellCellStencils::octreeInverseDistance::readNumbers()
+{
     maxWalk_ = dict_.getOrDefault<label>("maxWalk", 16);
     if (maxWalk_ < 0)
     {
@@ -170,7 +174,11 @@ void Foam::cellCellStencils::octreeInverseDistance::readSettings()
     }
 
     log_ = dict_.getOrDefault<bool>("log", true);
+}
 
+
+void Foam::cellCellStencils::octreeInverseDistance::readNoHoleCut()
+{
     noHoleCut_.clear();
     if (dict_.readIfPresent("noHoleCut", noHoleCut_))
     {
@@ -386,211 +394,6 @@ void Foam::cellCellStencils::octreeInverseDistance::fitZones()
         }
         zoneBb.inflate(1e-6);
     }
-}
-
-
-void Foam::cellCellStencils::octreeInverseDistance::fillVoxels()
-{
-    const label nZones = zoneSearch_.size();
-    const bool parallel = Pstream::parRun();
-
-    ws_.patchBb = ws_.zoneBb;
-    if (useSearchBox_)
-    {
-        ws_.patchBb = treeBoundBoxList(1, searchBox_);
-    }
-    ws_.patchDivs = voxelDivisions();
-
-    for (label zonei = 0; zonei < nZones; ++zonei)
-    {
-        const labelVector& d = ws_.patchDivs[zonei];
-        const boundBox& bb = ws_.patchBb[zonei][0];
-
-        // Refill only a zone that moved (or whose map box changed)
-        const bool fill =
-            returnReduce(!voxelsCurrent(zonei, bb, d), orOp<bool>());
-        if (fill)
-        {
-            localVoxels_[zonei].reset(bb, d);
-            if (debug && !localVoxels_[zonei].allOther())
-            {
-                FatalErrorInFunction
-                    << "voxel map of zone " << zonei << " not reset"
-                    << abort(FatalError);
-            }
-        }
-        markZoneBoundaries(zonei, fill);
-        if (fill && parallel)
-        {
-            patchVoxels_[zonei] = localVoxels_[zonei].patchVoxels();
-        }
-    }
-
-    forAll(ws_.patchTypes, celli)
-    {
-        if (ws_.patchTypes[celli] == patchCellType::OVERSET)
-        {
-            ws_.isOversetPatchCell.set(celli);
-        }
-    }
-
-    nVoxelsSent_ = 0;
-    if (parallel)
-    {
-        exchangePatchVoxels();
-    }
-}
-
-
-void Foam::cellCellStencils::octreeInverseDistance::cutHoles()
-{
-    // Incremental: the hole test only for the cells the PATCH voxels can
-    // reach; full: every cell (the first update after the cache was built,
-    // or holeCutting full)
-    ws_.incremental =
-        holeCutting_ == holeCuttingType::incremental && fullReason_.empty();
-    ws_.mode =
-        ws_.incremental ? word("incremental")
-      : fullReason_.size() ? word("full (" + fullReason_ + ")")
-      : word("full (holeCutting full)");
-    fullReason_.clear();
-
-    const label nZones = zoneSearch_.size();
-    nHoleTested_ = 0;
-    for (label srcI = 0; srcI < nZones - 1; ++srcI)
-    {
-        for (label tgtI = srcI + 1; tgtI < nZones; ++tgtI)
-        {
-            // This rank's patch voxels, then the other ranks'
-            for (const label s : {srcI, tgtI})
-            {
-                const label t = (s == srcI ? tgtI : srcI);
-                if (!cuts(s, t))
-                {
-                    continue;
-                }
-                markHoles(localVoxels_[s], t);
-                if (Pstream::parRun())
-                {
-                    markHoles(remoteVoxels_[s], t);
-                }
-            }
-        }
-    }
-}
-
-
-void Foam::cellCellStencils::octreeInverseDistance::findAllDonors()
-{
-    for (const zoneDonorSearch& search : zoneSearch_)
-    {
-        search.resetCounters();
-    }
-
-    // Donors (full: every cell on this rank) for the cells whose donors
-    // matter, on this rank (incremental) and the others (parallel); the
-    // donors must not be holes of the hole cutting
-    ws_.holeTypes = ws_.cellTypes;
-    nQueriesSent_ = 0;
-    nDonorSearched_ = 0;
-    if (!ws_.incremental)
-    {
-        findDonors(identity(mesh_.nCells()));
-    }
-    if (ws_.incremental || Pstream::parRun())
-    {
-        searchDonors(donorCandidates(), ws_.incremental);
-    }
-}
-
-
-void Foam::cellCellStencils::octreeInverseDistance::classifyCells()
-{
-    // As the stock stencil: an overset-patch cell is interpolated if it
-    // has a donor, else a hole (an orphan); so is a cell that was a hole
-    // and is calculated now
-    ws_.orphans =
-        findOrphans(ws_.cellTypes, ws_.isOversetPatchCell, ws_.stencil);
-
-    forAll(ws_.cellTypes, celli)
-    {
-        label& type = ws_.cellTypes[celli];
-
-        if
-        (
-            needsDonor(type, cellTypes_[celli], ws_.isOversetPatchCell[celli])
-        )
-        {
-            if (ws_.stencil[celli].size())
-            {
-                type = INTERPOLATED;
-            }
-            else
-            {
-                type = HOLE;
-                ws_.stencil[celli].clear();
-            }
-        }
-    }
-
-    // Unreachable regions become holes; fringe layers around the holes
-    findHoles(ws_.globalCells, mesh_, zoneID(), ws_.stencil, ws_.cellTypes);
-
-    ws_.floodTypes = ws_.cellTypes;
-    walkFrontResolved(!ws_.incremental);
-}
-
-
-bool Foam::cellCellStencils::octreeInverseDistance::buildStencil()
-{
-    // The final types (the previous ones go to the workspace)
-    cellTypes_.swap(ws_.cellTypes);
-
-    forAll(cellTypes_, celli)
-    {
-        if (cellTypes_[celli] == INTERPOLATED)
-        {
-            if (ws_.stencil[celli].size() != 1)
-            {
-                FatalErrorInFunction
-                    << "interpolated cell " << celli << " has "
-                    << ws_.stencil[celli].size() << " donors instead of 1"
-                    << abort(FatalError);
-            }
-            ws_.interpolated.append(celli);
-        }
-    }
-    interpolationCells_ = ws_.interpolated;
-    donorGlobal_.setSize(interpolationCells_.size());
-    forAll(interpolationCells_, i)
-    {
-        donorGlobal_[i] = ws_.stencil[interpolationCells_[i]][0];
-    }
-
-    UList<scalar>& weight = cellInterpolationWeight_;
-    weight.swap(ws_.weight);
-    dynamicOversetFvMesh::correctBoundaryConditions
-    <
-        volScalarField,
-        oversetFvPatchField<scalar>
-    >(cellInterpolationWeight_.boundaryFieldRef(), false);
-
-    // The inverse-distance stencil around each donor (the stock
-    // createStencil's result, one pass, addressing kept if unchanged)
-    return createStencilOnePass();
-}
-
-
-void Foam::cellCellStencils::octreeInverseDistance::report
-(
-    const bool rebuilt
-) const
-{
-    if (log_ || debug)
-    {
-        logStep(rebuilt);
-    }
-    reportOrphans();
 }
 
 

@@ -214,4 +214,66 @@ void Foam::cellCellStencils::octreeInverseDistance::walkFrontResolved
 }
 
 
+void Foam::cellCellStencils::octreeInverseDistance::findAllDonors()
+{
+    for (const zoneDonorSearch& search : zoneSearch_)
+    {
+        search.resetCounters();
+    }
+
+    // Donors (full: every cell on this rank) for the cells whose donors
+    // matter, on this rank (incremental) and the others (parallel); the
+    // donors must not be holes of the hole cutting
+    ws_.holeTypes = ws_.cellTypes;
+    nQueriesSent_ = 0;
+    nDonorSearched_ = 0;
+    if (!ws_.incremental)
+    {
+        findDonors(identity(mesh_.nCells()));
+    }
+    if (ws_.incremental || Pstream::parRun())
+    {
+        searchDonors(donorCandidates(), ws_.incremental);
+    }
+}
+
+
+void Foam::cellCellStencils::octreeInverseDistance::classifyCells()
+{
+    // As the stock stencil: an overset-patch cell is interpolated if it
+    // has a donor, else a hole (an orphan); so is a cell that was a hole
+    // and is calculated now
+    ws_.orphans =
+        findOrphans(ws_.cellTypes, ws_.isOversetPatchCell, ws_.stencil);
+
+    forAll(ws_.cellTypes, celli)
+    {
+        label& type = ws_.cellTypes[celli];
+
+        if
+        (
+            needsDonor(type, cellTypes_[celli], ws_.isOversetPatchCell[celli])
+        )
+        {
+            if (ws_.stencil[celli].size())
+            {
+                type = INTERPOLATED;
+            }
+            else
+            {
+                type = HOLE;
+                ws_.stencil[celli].clear();
+            }
+        }
+    }
+
+    // Unreachable regions become holes; fringe layers around the holes
+    findHoles(ws_.globalCells, mesh_, zoneID(), ws_.stencil, ws_.cellTypes);
+
+    ws_.floodTypes = ws_.cellTypes;
+    walkFrontResolved(!ws_.incremental);
+}
+
+
+
 // ************************************************************************* //

@@ -252,4 +252,96 @@ Foam::cellCellStencils::octreeInverseDistance::holeCandidates
 }
 
 
+void Foam::cellCellStencils::octreeInverseDistance::fillVoxels()
+{
+    const label nZones = zoneSearch_.size();
+    const bool parallel = Pstream::parRun();
+
+    ws_.patchBb = ws_.zoneBb;
+    if (useSearchBox_)
+    {
+        ws_.patchBb = treeBoundBoxList(1, searchBox_);
+    }
+    ws_.patchDivs = voxelDivisions();
+
+    for (label zonei = 0; zonei < nZones; ++zonei)
+    {
+        const labelVector& d = ws_.patchDivs[zonei];
+        const boundBox& bb = ws_.patchBb[zonei][0];
+
+        // Refill only a zone that moved (or whose map box changed)
+        const bool fill =
+            returnReduce(!voxelsCurrent(zonei, bb, d), orOp<bool>());
+        if (fill)
+        {
+            localVoxels_[zonei].reset(bb, d);
+            if (debug && !localVoxels_[zonei].allOther())
+            {
+                FatalErrorInFunction
+                    << "voxel map of zone " << zonei << " not reset"
+                    << abort(FatalError);
+            }
+        }
+        markZoneBoundaries(zonei, fill);
+        if (fill && parallel)
+        {
+            patchVoxels_[zonei] = localVoxels_[zonei].patchVoxels();
+        }
+    }
+
+    forAll(ws_.patchTypes, celli)
+    {
+        if (ws_.patchTypes[celli] == patchCellType::OVERSET)
+        {
+            ws_.isOversetPatchCell.set(celli);
+        }
+    }
+
+    nVoxelsSent_ = 0;
+    if (parallel)
+    {
+        exchangePatchVoxels();
+    }
+}
+
+
+void Foam::cellCellStencils::octreeInverseDistance::cutHoles()
+{
+    // Incremental: the hole test only for the cells the PATCH voxels can
+    // reach; full: every cell (the first update after the cache was built,
+    // or holeCutting full)
+    ws_.incremental =
+        holeCutting_ == holeCuttingType::incremental && fullReason_.empty();
+    ws_.mode =
+        ws_.incremental ? word("incremental")
+      : fullReason_.size() ? word("full (" + fullReason_ + ")")
+      : word("full (holeCutting full)");
+    fullReason_.clear();
+
+    const label nZones = zoneSearch_.size();
+    nHoleTested_ = 0;
+    for (label srcI = 0; srcI < nZones - 1; ++srcI)
+    {
+        for (label tgtI = srcI + 1; tgtI < nZones; ++tgtI)
+        {
+            // This rank's patch voxels, then the other ranks'
+            for (const label s : {srcI, tgtI})
+            {
+                const label t = (s == srcI ? tgtI : srcI);
+                if (!cuts(s, t))
+                {
+                    continue;
+                }
+                markHoles(localVoxels_[s], t);
+                if (Pstream::parRun())
+                {
+                    markHoles(remoteVoxels_[s], t);
+                }
+            }
+        }
+    }
+}
+
+
+
 // ************************************************************************* //

@@ -188,10 +188,11 @@ void Foam::cellCellStencils::octreeInverseDistance::answerQueries
 }
 
 
-void Foam::cellCellStencils::octreeInverseDistance::findRemoteDonors
+void Foam::cellCellStencils::octreeInverseDistance::collectRemoteQueries
 (
-    const labelUList& cells
-)
+    const labelUList& cells,
+    remoteQueries& q
+) const
 {
     const label nZones = zoneSearch_.size();
     const label nProcs = Pstream::nProcs();
@@ -199,82 +200,97 @@ void Foam::cellCellStencils::octreeInverseDistance::findRemoteDonors
     const labelList& zoneID = this->zoneID();
     const pointField& cc = mesh_.cellCentres();
 
-    // Queries: (cell, donor zone, rank) with the point in the donor zone's
-    // frame (the same transform on every rank) and the walk's seed there
-    DynamicList<label> qCell;
-    DynamicList<label> qZone;
-    DynamicList<label> qProc;
-    DynamicList<point> qPoint;
-    DynamicList<label> qSeed;
-    labelListList subMap(nProcs);
+    List<DynamicList<label>> send(nProcs);
+    for (const label celli : cells)
     {
-        List<DynamicList<label>> sendQueries(nProcs);
-        for (const label celli : cells)
+        const label tgti = zoneID[celli];
+        const label donor = ws_.donorZone[celli];
+
+        for (label srci = 0; srci < nZones; ++srci)
         {
-            const label tgti = zoneID[celli];
-            const label donor = ws_.donorZone[celli];
-
-            for (label srci = 0; srci < nZones; ++srci)
+            // Only a donor zone better than the one found can change it
+            if
+            (
+                srci == tgti
+             || (donor != -1 && !betterDonor(tgti, donor, srci))
+            )
             {
-                // Only a donor zone better than the one found can change it
-                if
-                (
-                    srci == tgti
-                 || (donor != -1 && !betterDonor(tgti, donor, srci))
-                )
-                {
-                    continue;
-                }
+                continue;
+            }
 
-                const point p0(zoneSearch_[srci].toReference(cc[celli]));
-                const labelPair& prev = prevRemote_[srci][celli];
+            const point p0(zoneSearch_[srci].toReference(cc[celli]));
+            const labelPair& prev = prevRemote_[srci][celli];
 
-                for (label proci = 0; proci < nProcs; ++proci)
+            for (label proci = 0; proci < nProcs; ++proci)
+            {
+                if (proci != myProci && procBb_[srci][proci].contains(p0))
                 {
-                    if (proci != myProci && procBb_[srci][proci].contains(p0))
-                    {
-                        sendQueries[proci].append(qCell.size());
-                        qCell.append(celli);
-                        qZone.append(srci);
-                        qProc.append(proci);
-                        qPoint.append(p0);
-                        qSeed.append
-                        (
-                            prev.first() == proci ? prev.second() : -1
-                        );
-                    }
+                    send[proci].append(q.cell.size());
+                    q.cell.append(celli);
+                    q.zone.append(srci);
+                    q.proc.append(proci);
+                    q.points.append(p0);
+                    q.seed.append(prev.first() == proci ? prev.second() : -1);
                 }
             }
         }
-        forAll(sendQueries, proci)
-        {
-            subMap[proci].transfer(sendQueries[proci]);
-        }
     }
 
-    const label nQueries = qCell.size();
-    nQueriesSent_ += nQueries;
+    q.send.setSize(nProcs);
+    forAll(send, proci)
+    {
+        q.send[proci].transfer(send[proci]);
+    }
+}
 
-    // The map: send the queries, answers come back by reverseDistribute
+
+Foam::autoPtr<Foam::mapDistribute>
+Foam::cellCellStencils::octreeInverseDistance::queryMap
+(
+    labelListList&& send
+)
+{
     labelList recvSizes;
-    Pstream::exchangeSizes(subMap, recvSizes);
-    labelListList constructMap(nProcs);
+    Pstream::exchangeSizes(send, recvSizes);
+
+    labelListList constructMap(Pstream::nProcs());
     label constructSize = 0;
     forAll(constructMap, proci)
     {
         constructMap[proci] = identity(recvSizes[proci], constructSize);
         constructSize += recvSizes[proci];
     }
-    const mapDistribute map
+    return autoPtr<mapDistribute>
     (
-        constructSize,
-        std::move(subMap),
-        std::move(constructMap)
+        new mapDistribute
+        (
+            constructSize,
+            std::move(send),
+            std::move(constructMap)
+        )
     );
+}
 
-    pointField points(std::move(qPoint));
-    labelList zones(qZone);
-    labelList seeds(std::move(qSeed));
+
+void Foam::cellCellStencils::octreeInverseDistance::findRemoteDonors
+(
+    const labelUList& cells
+)
+{
+    // Queries: (cell, donor zone, rank) with the point in the donor zone's
+    // frame (the same transform on every rank) and the walk's seed there
+    remoteQueries q;
+    collectRemoteQueries(cells, q);
+    const label nQueries = q.cell.size();
+    nQueriesSent_ += nQueries;
+
+    // The map: send the queries, answers come back by reverseDistribute
+    const autoPtr<mapDistribute> mapPtr(queryMap(std::move(q.send)));
+    const mapDistribute& map = *mapPtr;
+
+    pointField points(std::move(q.points));
+    labelList zones(q.zone);
+    labelList seeds(std::move(q.seed));
     map.distribute(points);
     map.distribute(zones);
     map.distribute(seeds);
@@ -286,14 +302,15 @@ void Foam::cellCellStencils::octreeInverseDistance::findRemoteDonors
     map.reverseDistribute(nQueries, found);
 
     // Keep the best donor zone, the lowest rank within a zone (as stock)
+    const labelList& zoneID = this->zoneID();
     for (label i = 0; i < nQueries; ++i)
     {
-        const label celli = qCell[i];
-        const label srci = qZone[i];
+        const label celli = q.cell[i];
+        const label srci = q.zone[i];
 
         if (found[i] != -1)
         {
-            prevRemote_[srci][celli] = labelPair(qProc[i], found[i]);
+            prevRemote_[srci][celli] = labelPair(q.proc[i], found[i]);
         }
         if
         (

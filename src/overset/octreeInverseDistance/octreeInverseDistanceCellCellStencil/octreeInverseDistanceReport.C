@@ -213,4 +213,18 @@ Foam::cellCellStencils::octreeInverseDistance::findOrphans
 }
 
 
+void Foam::cellCellStencils::octreeInverseDistance::report
+(
+    const bool rebuilt
+) const
+{
+    if (log_ || debug)
+    {
+        logStep(rebuilt);
+    }
+    reportOrphans();
+}
+
+
+
 // ************************************************************************* //

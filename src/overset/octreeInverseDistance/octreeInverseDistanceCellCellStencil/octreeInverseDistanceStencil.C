@@ -32,6 +32,8 @@ Description
 #include "octreeInverseDistanceCellCellStencil.H"
 #include "mapDistribute.H"
 #include "OStringStream.H"
+#include "dynamicOversetFvMesh.H"
+#include "oversetFvPatchField.H"
 #include "Time.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -254,6 +256,47 @@ bool Foam::cellCellStencils::octreeInverseDistance::createStencilOnePass()
     ++nStencilBuilt_;
     return true;
 }
+
+
+bool Foam::cellCellStencils::octreeInverseDistance::buildStencil()
+{
+    // The final types (the previous ones go to the workspace)
+    cellTypes_.swap(ws_.cellTypes);
+
+    forAll(cellTypes_, celli)
+    {
+        if (cellTypes_[celli] == INTERPOLATED)
+        {
+            if (ws_.stencil[celli].size() != 1)
+            {
+                FatalErrorInFunction
+                    << "interpolated cell " << celli << " has "
+                    << ws_.stencil[celli].size() << " donors instead of 1"
+                    << abort(FatalError);
+            }
+            ws_.interpolated.append(celli);
+        }
+    }
+    interpolationCells_ = ws_.interpolated;
+    donorGlobal_.setSize(interpolationCells_.size());
+    forAll(interpolationCells_, i)
+    {
+        donorGlobal_[i] = ws_.stencil[interpolationCells_[i]][0];
+    }
+
+    UList<scalar>& weight = cellInterpolationWeight_;
+    weight.swap(ws_.weight);
+    dynamicOversetFvMesh::correctBoundaryConditions
+    <
+        volScalarField,
+        oversetFvPatchField<scalar>
+    >(cellInterpolationWeight_.boundaryFieldRef(), false);
+
+    // The inverse-distance stencil around each donor (the stock
+    // createStencil's result, one pass, addressing kept if unchanged)
+    return createStencilOnePass();
+}
+
 
 
 // ************************************************************************* //
