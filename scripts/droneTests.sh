@@ -1,9 +1,9 @@
 #------------------------------------------------------------------------------
 # flapFoam: shell functions of the drone cases' Alltest scripts (sourced).
 # Each prints PASS/FAIL lines "PASS [label] ..." and sets status=1 on a
-# failure.  Needs: python (Debian's python3), root (the case folder, the
-# working directory), runs/ (the logs), checkRun (the single-wing drone's
-# scripts/checkRun.py).
+# failure: run, motionCycle, plots, result, flightData, vacuum.  Needs:
+# python (Debian's python3), the case folder as the working directory,
+# runs/ (the logs), checkRun (the single-wing drone's scripts/checkRun.py).
 #------------------------------------------------------------------------------
 
 projectScripts="$(cd "${BASH_SOURCE[0]%/*}" && pwd -P)"
@@ -21,17 +21,31 @@ done
 laminar=(-set constant/turbulenceProperties simulationType laminar)
 checkRun="$projectScripts/../cases/singleWingDrone/scripts/checkRun.py"
 
-# run <label> <Allrun options...>: one line for the run (completed, no
-# orphan at any step when the case checks orphans) and the FAIL lines of
-# its checks
+# run [-each] <label> <Allrun options...>: the run's log in
+# runs/log.Alltest.<label>; one line for the run (completed, no orphan at
+# any step when the case checks orphans) and the FAIL lines of its checks;
+# with -each every PASS/FAIL line of the run instead, and a FAIL line if
+# it does not complete
 run()
 {
+    local each=false
+    [ "$1" = -each ] && { each=true; shift; }
     local label="$1"
     shift
     local log="runs/log.Alltest.$label"
     local t0=$SECONDS
     ./Allrun "$@" > "$log" 2>&1
     local rc=$?
+    if $each
+    then
+        grep -E '^(PASS|FAIL) ' "$log" | sed -E "s/^(PASS|FAIL) /\1 [$label] /"
+        if [ "$rc" -ne 0 ]
+        then
+            echo "FAIL [$label] ./Allrun $* exited $rc (see $log)"
+            status=1
+        fi
+        return
+    fi
     local p f
     p=$(grep -c '^PASS ' "$log")
     f=$(grep -c '^FAIL ' "$log")
@@ -48,6 +62,28 @@ run()
              "written steps ($((SECONDS - t0)) s)"
     else
         echo "PASS [$label] run completed ($((SECONDS - t0)) s)"
+    fi
+}
+
+# plots <label> <run folder> <PNG names...>: scripts/plotRun.py on the run
+# folder (log runs/log.plotRun); every PNG in <run folder>/plots, not empty
+plots()
+{
+    local label="$1" dir="$2"
+    shift 2
+    "$python" scripts/plotRun.py -case "$dir" > runs/log.plotRun 2>&1
+    local p n=0 error
+    for p in "$@"
+    do
+        [ -s "$dir/plots/$p.png" ] && n=$((n + 1))
+    done
+    error="$(grep -o 'max |q - analytic|/amplitude = [^ ]*' runs/log.plotRun)"
+    if [ "$n" -eq "$#" ]
+    then
+        echo "PASS [$label] plots: $n PNGs in $dir/plots${error:+; $error}"
+    else
+        echo "FAIL [$label] plots: $n of $# PNGs (see runs/log.plotRun)"
+        status=1
     fi
 }
 
