@@ -95,11 +95,11 @@ TEST(bodyLoad, treeBodyID)
         {"tip", "not a body of the tree"}
     );
 
-    // Not a body at all
-    expectError
+    // Not a body at all: the same FatalIOError
+    expectIOError
     (
         [&](){ bodyLoad::treeBodyID(model, "ghost", dict); },
-        {"ghost"}
+        {"ghost", "not a body of the tree"}
     );
 }
 

@@ -178,10 +178,10 @@ TEST(Errors, patchLoadBodyNotInTree)
 
     // The load's dictionary names a body the model does not have
     const dictionary dict(modelDict("bodies { ghost { patches (xMin); } }"));
-    expectError
+    expectIOError
     (
         [&](){ bodyLoad::New(flow.mesh(), model, dict); },
-        {"ghost"}
+        {"ghost", "not a body of the tree"}
     );
 }
 
