@@ -31,7 +31,11 @@ Description
         loop over the cells of the MOVED mesh give the same cell;
       - degenerate queries: mesh vertices and face centres (ties: any cell
         that contains the point), far outside, maxWalk 0;
-      - an empty zone (no cells): no donor, identity fit.
+      - an empty zone (no cells): no donor, identity fit;
+    and the orphan rule of the octreeInverseDistance stencil.  The other
+    classes are tested in their own files, linked into the same program
+    (flapFoamTest-overset): Test-patchVoxelMap.C, Test-cellBins.C; the
+    small meshes are in oversetTestMeshes.H.
 
     Every test asserts; the program exits non-zero on failure.
 
