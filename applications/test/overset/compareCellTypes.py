@@ -10,7 +10,7 @@ stepTimers medians of the overset parts.
 Usage: compareCellTypes.py -dir DIR -reference NAME NAME...
   DIR/NAME is a case with time folders holding cellTypes and
   postProcessing/stepTimers/0/stepTimers.dat.
-Exit status 1 if a match fraction is below -minMatch (default 0.995) or a
+Exit status 1 if a match fraction is below -minMatch (default 1: every cell) or a
 run has no cellTypes.
 """
 
@@ -70,7 +70,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("-dir", required=True)
     ap.add_argument("-reference", required=True)
-    ap.add_argument("-minMatch", type=float, default=0.995)
+    ap.add_argument("-minMatch", type=float, default=1.0)
     ap.add_argument("-skip", type=int, default=2,
                     help="first steps left out of the timer medians")
     ap.add_argument("names", nargs="+")

@@ -8,7 +8,7 @@ differ only in the overset stencil: each body's force of bodies.dat and
 the trajectory of joints.dat, rows matched by time (the readers of
 flapfoam.checkRun and flapfoam.tables).
 
-Usage: compareMotion.py REF CASE [-forceTol 0.005] [-qTol 1e-4]
+Usage: compareMotion.py REF CASE [-forceTol 0] [-qTol 0]
                         [-columns q_0,qDot_0,q_1,qDot_1] [-bodies wing]
 
   force (each body of the comma-separated -bodies): max over the rows and
@@ -44,8 +44,8 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("ref")
     ap.add_argument("case")
-    ap.add_argument("-forceTol", type=float, default=0.005)
-    ap.add_argument("-qTol", type=float, default=1e-4)
+    ap.add_argument("-forceTol", type=float, default=0.0)
+    ap.add_argument("-qTol", type=float, default=0.0)
     ap.add_argument("-columns", default="q_0,qDot_0,q_1,qDot_1")
     ap.add_argument("-bodies", default="wing")
     a = ap.parse_args()
