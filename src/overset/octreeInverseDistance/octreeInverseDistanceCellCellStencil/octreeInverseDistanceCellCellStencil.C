@@ -326,7 +326,7 @@ void Foam::cellCellStencils::octreeInverseDistance::buildCache
     patchFilledSmallVec_.setSize(nZones, Zero);
     patchFilledPoints_.setSize(nZones);
     patchVoxels_.setSize(nZones);
-    remoteVoxels_ = List<patchVoxelMap>(nZones);
+    voxelExchange_.clear(nZones);
 
     for (label zonei = 0; zonei < nZones; ++zonei)
     {
@@ -468,13 +468,12 @@ Foam::cellCellStencils::octreeInverseDistance::octreeInverseDistance
     patchFilledSmallVec_(),
     patchFilledPoints_(),
     patchVoxels_(),
-    remoteVoxels_(),
+    voxelExchange_(),
     cellRadius_(),
     zoneResidual_(),
     donorGlobal_(),
     stencilGlobal_(),
     ws_(),
-    nVoxelsSent_(0),
     nQueriesSent_(0),
     nHoleTested_(0),
     nDonorSearched_(0),

@@ -297,10 +297,9 @@ void Foam::cellCellStencils::octreeInverseDistance::fillVoxels()
         }
     }
 
-    nVoxelsSent_ = 0;
     if (parallel)
     {
-        exchangePatchVoxels();
+        voxelExchange_.exchange(localVoxels_, patchVoxels_, voxelTargets());
     }
 }
 
@@ -335,7 +334,7 @@ void Foam::cellCellStencils::octreeInverseDistance::cutHoles()
                 markHoles(localVoxels_[s], t);
                 if (Pstream::parRun())
                 {
-                    markHoles(remoteVoxels_[s], t);
+                    markHoles(voxelExchange_.remote(s), t);
                 }
             }
         }

@@ -21,7 +21,8 @@ License
 
 Description
     octreeInverseDistance: what crosses the ranks.  Patch voxels go only to
-    the ranks whose parts of other zones they may cut, donor queries only
+    the ranks whose parts of other zones they may cut (the boxes here, the
+    exchange in Foam::patchVoxelExchange), donor queries only
     for the cells whose donors matter, through a mapDistribute built from
     the cached per-rank boxes in the zones' frames.
 
@@ -30,35 +31,32 @@ Description
 #include "octreeInverseDistanceCellCellStencil.H"
 #include "globalIndex.H"
 #include "mapDistribute.H"
-#include "syncTools.H"
-#include "PstreamBuffers.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::labelListList
-Foam::cellCellStencils::octreeInverseDistance::patchVoxelsFor
-(
-    const label proci
-)
+Foam::List<Foam::List<Foam::treeBoundBoxList>>
+Foam::cellCellStencils::octreeInverseDistance::voxelTargets() const
 {
     const label nZones = zoneSearch_.size();
-    labelListList send(nZones);
+    List<List<treeBoundBoxList>> tgtBb(Pstream::nProcs());
 
-    for (label zonei = 0; zonei < nZones; ++zonei)
+    forAll(tgtBb, proci)
     {
-        const labelList& voxels = patchVoxels_[zonei];
-        if (voxels.empty())
+        if (proci == Pstream::myProcNo())
         {
             continue;
         }
-
-        // The cached boxes of that rank's parts of the other zones, at the
-        // current pose, grown by the tolerance the hole test adds
-        treeBoundBoxList tgtBbs;
-        for (label tgti = 0; tgti < nZones; ++tgti)
+        tgtBb[proci].setSize(nZones);
+        for (label zonei = 0; zonei < nZones; ++zonei)
         {
-            if (tgti != zonei)
+            // The cached boxes of that rank's parts of the other zones, at
+            // the current pose, grown by the tolerance the hole test adds
+            for (label tgti = 0; tgti < nZones; ++tgti)
             {
+                if (tgti == zonei)
+                {
+                    continue;
+                }
                 treeBoundBox bb
                 (
                     zoneSearch_[tgti].toCurrent(procBb_[tgti][proci])
@@ -67,93 +65,12 @@ Foam::cellCellStencils::octreeInverseDistance::patchVoxelsFor
                 {
                     bb.min() -= smallVec_;
                     bb.max() += smallVec_;
-                    tgtBbs.append(bb);
+                    tgtBb[proci][zonei].append(bb);
                 }
             }
         }
-        if (tgtBbs.empty())
-        {
-            continue;
-        }
-
-        DynamicList<label> sendVoxels;
-        for (const label v : voxels)
-        {
-            treeBoundBox voxelBb(localVoxels_[zonei].voxelBox(v));
-            // Round-off of index3 at the voxel faces
-            voxelBb.inflate(1e-6);
-
-            for (const treeBoundBox& tgtBb : tgtBbs)
-            {
-                if (tgtBb.overlaps(voxelBb))
-                {
-                    sendVoxels.append(v);
-                    break;
-                }
-            }
-        }
-        nVoxelsSent_ += sendVoxels.size();
-        send[zonei].transfer(sendVoxels);
     }
-    return send;
-}
-
-
-void Foam::cellCellStencils::octreeInverseDistance::exchangePatchVoxels()
-{
-    const label nZones = zoneSearch_.size();
-    const label myProci = Pstream::myProcNo();
-
-    // Clear last step's remote voxels, in this step's grids
-    for (label zonei = 0; zonei < nZones; ++zonei)
-    {
-        remoteVoxels_[zonei].reset(ws_.patchBb[zonei][0], ws_.patchDivs[zonei]);
-    }
-
-    // Send each rank the PATCH voxels that may cut its parts of the zones
-    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
-    for (label proci = 0; proci < Pstream::nProcs(); ++proci)
-    {
-        if (proci != myProci)
-        {
-            const labelListList send(patchVoxelsFor(proci));
-            bool any = false;
-            for (const labelList& voxels : send)
-            {
-                any = any || voxels.size();
-            }
-            if (any)
-            {
-                UOPstream os(proci, pBufs);
-                os << send;
-            }
-        }
-    }
-
-    labelList recvSizes;
-    pBufs.finishedSends(recvSizes);
-
-    // Merge the received voxels: the hole test asks whether a cell meets a
-    // PATCH voxel of any rank, so one map per zone holds them all (the
-    // ranks share the zone's voxel grid)
-    for (label proci = 0; proci < Pstream::nProcs(); ++proci)
-    {
-        if (proci == myProci || !recvSizes[proci])
-        {
-            continue;
-        }
-
-        UIPstream is(proci, pBufs);
-        const labelListList recv(is);
-
-        forAll(recv, zonei)
-        {
-            for (const label v : recv[zonei])
-            {
-                remoteVoxels_[zonei].setPatchVoxel(v);
-            }
-        }
-    }
+    return tgtBb;
 }
 
 

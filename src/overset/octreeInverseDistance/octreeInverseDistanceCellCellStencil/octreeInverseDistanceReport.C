@@ -180,7 +180,7 @@ void Foam::cellCellStencils::octreeInverseDistance::logStep
     if (Pstream::parRun())
     {
         Info<< indent << "sent: patch voxels "
-            << returnReduce(nVoxelsSent_, sumOp<label>())
+            << returnReduce(voxelExchange_.nSent(), sumOp<label>())
             << " donor queries "
             << returnReduce(nQueriesSent_, sumOp<label>()) << nl;
     }

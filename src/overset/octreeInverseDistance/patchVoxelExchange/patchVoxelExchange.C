@@ -1,0 +1,146 @@
+/*---------------------------------------------------------------------------*\
+  flapFoam: free-flight simulation of flapping-wing drones on OpenFOAM v1912
+-------------------------------------------------------------------------------
+    Copyright (C) 2025-2026 flapFoam developers
+-------------------------------------------------------------------------------
+License
+    This file is part of flapFoam, derived from OpenFOAM.
+
+    flapFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by
+    the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    flapFoam is distributed in the hope that it will be useful, but WITHOUT
+    ANY WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License
+    along with flapFoam (COPYING).  If not, see <http://www.gnu.org/licenses/>.
+
+\*---------------------------------------------------------------------------*/
+
+#include "patchVoxelExchange.H"
+#include "PstreamBuffers.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::labelListList Foam::patchVoxelExchange::select
+(
+    const UList<patchVoxelMap>& local,
+    const labelListList& voxels,
+    const List<treeBoundBoxList>& tgtBb
+)
+{
+    labelListList send(voxels.size());
+    forAll(voxels, zonei)
+    {
+        if (voxels[zonei].empty() || tgtBb[zonei].empty())
+        {
+            continue;
+        }
+
+        DynamicList<label> sendVoxels;
+        for (const label v : voxels[zonei])
+        {
+            treeBoundBox voxelBb(local[zonei].voxelBox(v));
+            // Round-off of index3 at the voxel faces
+            voxelBb.inflate(1e-6);
+
+            for (const treeBoundBox& bb : tgtBb[zonei])
+            {
+                if (bb.overlaps(voxelBb))
+                {
+                    sendVoxels.append(v);
+                    break;
+                }
+            }
+        }
+        nSent_ += sendVoxels.size();
+        send[zonei].transfer(sendVoxels);
+    }
+    return send;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::patchVoxelExchange::patchVoxelExchange()
+:
+    remote_(),
+    nSent_(0)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::patchVoxelExchange::clear(const label nZones)
+{
+    remote_ = List<patchVoxelMap>(nZones);
+    nSent_ = 0;
+}
+
+
+void Foam::patchVoxelExchange::exchange
+(
+    const UList<patchVoxelMap>& local,
+    const labelListList& voxels,
+    const List<List<treeBoundBoxList>>& tgtBb
+)
+{
+    const label myProci = Pstream::myProcNo();
+
+    // Clear last step's remote voxels, in this step's grids (the ranks
+    // share each zone's grid)
+    nSent_ = 0;
+    forAll(remote_, zonei)
+    {
+        remote_[zonei].reset(local[zonei].bb(), local[zonei].nDivs());
+    }
+
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    for (label proci = 0; proci < Pstream::nProcs(); ++proci)
+    {
+        if (proci != myProci)
+        {
+            const labelListList send(select(local, voxels, tgtBb[proci]));
+            bool any = false;
+            for (const labelList& v : send)
+            {
+                any = any || v.size();
+            }
+            if (any)
+            {
+                UOPstream os(proci, pBufs);
+                os << send;
+            }
+        }
+    }
+
+    labelList recvSizes;
+    pBufs.finishedSends(recvSizes);
+
+    // Merge the received voxels: the hole test asks whether a cell meets a
+    // PATCH voxel of any rank, so one map per zone holds them all
+    for (label proci = 0; proci < Pstream::nProcs(); ++proci)
+    {
+        if (proci == myProci || !recvSizes[proci])
+        {
+            continue;
+        }
+
+        UIPstream is(proci, pBufs);
+        const labelListList recv(is);
+        forAll(recv, zonei)
+        {
+            for (const label v : recv[zonei])
+            {
+                remote_[zonei].setPatchVoxel(v);
+            }
+        }
+    }
+}
+
+
+// ************************************************************************* //
