@@ -23,6 +23,154 @@ License
 #include "imposedMotionList.H"
 #include "StringStream.H"
 
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::imposedMotionList::readMotions
+(
+    const dictionary& motionsDict,
+    const word& key
+)
+{
+    for (const entry& e : motionsDict)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(motionsDict)
+                << "Entry '" << e.keyword() << "' of '" << key
+                << "' is not a dictionary: each entry is one motion"
+                << " { type ...; ... }" << nl
+                << exit(FatalIOError);
+        }
+
+        append(imposedMotion::New(e.keyword(), e.dict()));
+    }
+}
+
+
+void Foam::imposedMotionList::checkJoint
+(
+    const label motioni,
+    const label j,
+    const labelUList& jointDoF,
+    const labelUList& ownerMotion
+) const
+{
+    const imposedMotion& motion = operator[](motioni);
+    const label nDoF = jointDoF.size();
+
+    if (j < 0 || j >= nDoF)
+    {
+        FatalIOErrorInFunction(motion.dict())
+            << "Entry '" << motion.jointsKey() << "' of '"
+            << motion.name() << "': joint " << j
+            << " is out of range: the model has " << nDoF
+            << " degrees of freedom, allowed 0.." << nDoF - 1 << nl
+            << exit(FatalIOError);
+    }
+
+    if (jointDoF[j] != 1)
+    {
+        FatalIOErrorInFunction(motion.dict())
+            << "Entry '" << motion.jointsKey() << "' of '"
+            << motion.name() << "': joint " << j
+            << " belongs to a joint with " << jointDoF[j]
+            << " degrees of freedom; only 1-DoF joints can be"
+            << " prescribed" << nl
+            << exit(FatalIOError);
+    }
+
+    if (ownerMotion[j] >= 0)
+    {
+        const imposedMotion& other = operator[](ownerMotion[j]);
+
+        OStringStream by;
+        if (ownerMotion[j] == motioni)
+        {
+            by  << "it appears twice in '" << motion.jointsKey()
+                << "' of '" << motion.name() << "'";
+        }
+        else
+        {
+            by  << "by '" << other.name() << "' ('"
+                << other.jointsKey() << "') and by '"
+                << motion.name() << "' ('" << motion.jointsKey()
+                << "')";
+        }
+
+        FatalIOErrorInFunction(motion.dict())
+            << "Entry '" << motion.jointsKey() << "' of '"
+            << motion.name() << "': joint " << j
+            << " is prescribed twice: " << by.str().c_str() << nl
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::imposedMotionList::findOwners
+(
+    const labelUList& jointDoF,
+    labelList& ownerMotion,
+    labelList& ownerLocal
+) const
+{
+    const label nDoF = jointDoF.size();
+
+    ownerMotion.setSize(nDoF);
+    ownerMotion = -1;
+    ownerLocal.setSize(nDoF);
+    ownerLocal = -1;
+
+    forAll(*this, motioni)
+    {
+        const labelList& joints = operator[](motioni).joints();
+
+        forAll(joints, locali)
+        {
+            const label j = joints[locali];
+
+            checkJoint(motioni, j, jointDoF, ownerMotion);
+
+            ownerMotion[j] = motioni;
+            ownerLocal[j] = locali;
+        }
+    }
+}
+
+
+void Foam::imposedMotionList::setJoints
+(
+    const labelUList& ownerMotion,
+    const labelUList& ownerLocal
+)
+{
+    // Prescribed joints, ascending
+    label nPrescribed = 0;
+    for (const label motioni : ownerMotion)
+    {
+        if (motioni >= 0)
+        {
+            ++nPrescribed;
+        }
+    }
+
+    joints_.setSize(nPrescribed);
+    motionI_.setSize(nPrescribed);
+    localI_.setSize(nPrescribed);
+
+    label k = 0;
+    forAll(ownerMotion, j)
+    {
+        if (ownerMotion[j] >= 0)
+        {
+            joints_[k] = j;
+            motionI_[k] = ownerMotion[j];
+            localI_[k] = ownerLocal[j];
+            ++k;
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::imposedMotionList::imposedMotionList
@@ -53,116 +201,16 @@ Foam::imposedMotionList::imposedMotionList
             << exit(FatalIOError);
     }
 
-    const dictionary& motionsDict = *motionsDictPtr;
-
     // Read the motions: one per sub-dictionary
-    for (const entry& e : motionsDict)
-    {
-        if (!e.isDict())
-        {
-            FatalIOErrorInFunction(motionsDict)
-                << "Entry '" << e.keyword() << "' of '" << key
-                << "' is not a dictionary: each entry is one motion"
-                << " { type ...; ... }" << nl
-                << exit(FatalIOError);
-        }
+    readMotions(*motionsDictPtr, key);
 
-        append(imposedMotion::New(e.keyword(), e.dict()));
-    }
+    // Check the driven joints against the model.  For each q index: the
+    // motion driving it (-1: none) and the index in that motion's joints()
+    labelList ownerMotion;
+    labelList ownerLocal;
+    findOwners(jointDoF, ownerMotion, ownerLocal);
 
-    // Check the driven joints against the model
-    const label nDoF = jointDoF.size();
-
-    // For each q index: the motion driving it (-1: none) and the index in
-    // that motion's joints()
-    labelList ownerMotion(nDoF, -1);
-    labelList ownerLocal(nDoF, -1);
-
-    forAll(*this, motioni)
-    {
-        const imposedMotion& motion = operator[](motioni);
-        const labelList& joints = motion.joints();
-
-        forAll(joints, locali)
-        {
-            const label j = joints[locali];
-
-            if (j < 0 || j >= nDoF)
-            {
-                FatalIOErrorInFunction(motion.dict())
-                    << "Entry '" << motion.jointsKey() << "' of '"
-                    << motion.name() << "': joint " << j
-                    << " is out of range: the model has " << nDoF
-                    << " degrees of freedom, allowed 0.." << nDoF - 1 << nl
-                    << exit(FatalIOError);
-            }
-
-            if (jointDoF[j] != 1)
-            {
-                FatalIOErrorInFunction(motion.dict())
-                    << "Entry '" << motion.jointsKey() << "' of '"
-                    << motion.name() << "': joint " << j
-                    << " belongs to a joint with " << jointDoF[j]
-                    << " degrees of freedom; only 1-DoF joints can be"
-                    << " prescribed" << nl
-                    << exit(FatalIOError);
-            }
-
-            if (ownerMotion[j] >= 0)
-            {
-                const imposedMotion& other = operator[](ownerMotion[j]);
-
-                OStringStream by;
-                if (ownerMotion[j] == motioni)
-                {
-                    by  << "it appears twice in '" << motion.jointsKey()
-                        << "' of '" << motion.name() << "'";
-                }
-                else
-                {
-                    by  << "by '" << other.name() << "' ('"
-                        << other.jointsKey() << "') and by '"
-                        << motion.name() << "' ('" << motion.jointsKey()
-                        << "')";
-                }
-
-                FatalIOErrorInFunction(motion.dict())
-                    << "Entry '" << motion.jointsKey() << "' of '"
-                    << motion.name() << "': joint " << j
-                    << " is prescribed twice: " << by.str().c_str() << nl
-                    << exit(FatalIOError);
-            }
-
-            ownerMotion[j] = motioni;
-            ownerLocal[j] = locali;
-        }
-    }
-
-    // Prescribed joints, ascending
-    label nPrescribed = 0;
-    for (const label motioni : ownerMotion)
-    {
-        if (motioni >= 0)
-        {
-            ++nPrescribed;
-        }
-    }
-
-    joints_.setSize(nPrescribed);
-    motionI_.setSize(nPrescribed);
-    localI_.setSize(nPrescribed);
-
-    label k = 0;
-    forAll(ownerMotion, j)
-    {
-        if (ownerMotion[j] >= 0)
-        {
-            joints_[k] = j;
-            motionI_[k] = ownerMotion[j];
-            localI_[k] = ownerLocal[j];
-            ++k;
-        }
-    }
+    setJoints(ownerMotion, ownerLocal);
 }
 
 
