@@ -192,22 +192,25 @@ Foam::imposedMotions::tabulated::readFile
 }
 
 
-void Foam::imposedMotions::tabulated::build
-(
-    const dictionary& dict,
-    const word& key,
-    const List<Tuple2<scalar, scalar>>& points
-)
+std::string Foam::imposedMotions::tabulated::source(const word& key) const
 {
-    // Name of the source in messages: the key, and the file if any
     OStringStream srcStream;
     srcStream << "Entry '" << key << "'";
     if (!file_.empty())
     {
         srcStream << " = " << file_;
     }
-    const std::string src(srcStream.str());
+    return srcStream.str();
+}
 
+
+void Foam::imposedMotions::tabulated::checkPoints
+(
+    const dictionary& dict,
+    const std::string& src,
+    const List<Tuple2<scalar, scalar>>& points
+)
+{
     const label nPoints = points.size();
 
     if (nPoints < 4)
@@ -251,8 +254,15 @@ void Foam::imposedMotions::tabulated::build
             << "); the points must cover exactly one period" << nl
             << exit(FatalIOError);
     }
+}
 
-    // Knots
+
+void Foam::imposedMotions::tabulated::setKnots
+(
+    const List<Tuple2<scalar, scalar>>& points
+)
+{
+    const label nPoints = points.size();
     const label n = nPoints - 1;    // number of intervals = unknowns M_i
 
     t0_ = points.first().first();
@@ -266,6 +276,12 @@ void Foam::imposedMotions::tabulated::build
     }
     q_[n] = q_[0];              // exactly periodic
     tRel_[n] = period_;
+}
+
+
+void Foam::imposedMotions::tabulated::setCoefficients()
+{
+    const label n = q_.size() - 1;  // number of intervals = unknowns M_i
 
     // Interval widths h_i, i = 0 .. n-1
     scalarList h(n);
@@ -304,6 +320,20 @@ void Foam::imposedMotions::tabulated::build
         C_[i] = Mi/2;
         D_[i] = (Mi1 - Mi)/(6*h[i]);
     }
+}
+
+
+void Foam::imposedMotions::tabulated::build
+(
+    const dictionary& dict,
+    const word& key,
+    const List<Tuple2<scalar, scalar>>& points
+)
+{
+    checkPoints(dict, source(key), points);
+
+    setKnots(points);
+    setCoefficients();
 }
 
 
