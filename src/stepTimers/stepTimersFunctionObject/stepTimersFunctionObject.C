@@ -381,22 +381,13 @@ bool Foam::functionObjects::stepTimers::read(const dictionary& dict)
 }
 
 
-bool Foam::functionObjects::stepTimers::execute()
+Foam::scalar Foam::functionObjects::stepTimers::pimpleTime
+(
+    const clock::time_point& now,
+    const scalar total
+) const
 {
-    // Synchronise the ranks, so that the step ends at the same instant on
-    // all of them (the wait of the faster ranks counts in their pimple),
-    // and learn whether a rank used a part that is not a column yet
-    const bool newParts = returnReduce
-    (
-        timers_.parts().size() > nSeen_,
-        orOp<bool>()
-    );
-
-    const clock::time_point now = clock::now();
-
-    const scalar total = Foam::stepTimers::seconds(previous_, now);
-
-    const scalar pimple =
+    return
     (
         timers_.stamped(Foam::stepTimers::meshUpdated)
       ? Foam::stepTimers::seconds
@@ -406,8 +397,12 @@ bool Foam::functionObjects::stepTimers::execute()
         )
       : total
     );
+}
 
-    const scalar preUpdate =
+
+Foam::scalar Foam::functionObjects::stepTimers::preUpdateTime() const
+{
+    return
     (
         timers_.stamped(Foam::stepTimers::meshUpdateStart)
       ? Foam::stepTimers::seconds
@@ -417,14 +412,11 @@ bool Foam::functionObjects::stepTimers::execute()
         )
       : 0
     );
+}
 
-    if (newParts)
-    {
-        syncParts();
-    }
 
-    const scalarList values(gather(total, pimple, preUpdate));
-
+void Foam::functionObjects::stepTimers::checkInterval()
+{
     if
     (
         previousTimeIndex_ >= 0
@@ -440,29 +432,76 @@ bool Foam::functionObjects::stepTimers::execute()
 
         warnedInterval_ = true;
     }
+}
+
+
+void Foam::functionObjects::stepTimers::writeRow(const scalarList& values)
+{
+    const label nColumns = measured.size() + parts_.size();
+
+    OFstream& os = file();
+
+    if (nHeader_ < nColumns)
+    {
+        writeColumns(os);
+    }
+
+    writeCurrentTime(os);
+
+    for (label coli = 0; coli < nColumns; ++coli)
+    {
+        os  << tab << values[coli];
+    }
+
+    os  << endl;
+}
+
+
+void Foam::functionObjects::stepTimers::publish(const scalarList& values)
+{
+    wordList columns(measured);
+    columns.append(parts_);
+    timers_.setLast
+    (
+        time_.timeIndex(),
+        columns,
+        SubList<scalar>(values, columns.size())
+    );
+}
+
+
+bool Foam::functionObjects::stepTimers::execute()
+{
+    // Synchronise the ranks, so that the step ends at the same instant on
+    // all of them (the wait of the faster ranks counts in their pimple),
+    // and learn whether a rank used a part that is not a column yet
+    const bool newParts = returnReduce
+    (
+        timers_.parts().size() > nSeen_,
+        orOp<bool>()
+    );
+
+    const clock::time_point now = clock::now();
+
+    const scalar total = Foam::stepTimers::seconds(previous_, now);
+    const scalar pimple = pimpleTime(now, total);
+    const scalar preUpdate = preUpdateTime();
+
+    if (newParts)
+    {
+        syncParts();
+    }
+
+    const scalarList values(gather(total, pimple, preUpdate));
+
+    checkInterval();
 
     previousTimeIndex_ = time_.timeIndex();
     ++nSteps_;
 
-    const label nColumns = measured.size() + parts_.size();
-
     if (writeToFile())
     {
-        OFstream& os = file();
-
-        if (nHeader_ < nColumns)
-        {
-            writeColumns(os);
-        }
-
-        writeCurrentTime(os);
-
-        for (label coli = 0; coli < nColumns; ++coli)
-        {
-            os  << tab << values[coli];
-        }
-
-        os  << endl;
+        writeRow(values);
     }
 
     if (Pstream::master() && nSteps_ > nStartup_)
@@ -471,16 +510,7 @@ bool Foam::functionObjects::stepTimers::execute()
     }
 
     // The row, for other function objects of this step (flightData)
-    {
-        wordList columns(measured);
-        columns.append(parts_);
-        timers_.setLast
-        (
-            time_.timeIndex(),
-            columns,
-            SubList<scalar>(values, columns.size())
-        );
-    }
+    publish(values);
 
     timers_.reset();
 
