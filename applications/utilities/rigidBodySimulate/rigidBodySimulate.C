@@ -66,6 +66,118 @@ using namespace Foam;
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
+namespace
+{
+
+// Initial state: <startTime>/uniform/rigidBodyMotionState if present (zero
+// otherwise), reported to the log
+dictionary readInitialState(const Time& runTime)
+{
+    IOobject stateIO(RBD::eABAMotion::stateIO(runTime));
+    const bool restart = stateIO.typeHeaderOk<IOdictionary>(false);
+    const dictionary stateDict
+    (
+        RBD::eABAMotion::initialState(runTime, dictionary())
+    );
+
+    if (restart)
+    {
+        Info<< "Initial state from " << stateIO.objectPath() << nl << endl;
+    }
+    else
+    {
+        Info<< "No " << stateIO.objectPath() << ": zero initial state"
+            << nl << endl;
+    }
+
+    return stateDict;
+}
+
+
+// Consistent state at the start: exact prescribed joints, free
+// accelerations and the prescribed joints' forces.  A restart keeps the
+// stored accelerations (the next step starts from them, as a run that
+// did not stop) and only evaluates the forces; a state without qDdot
+// gets consistent accelerations.
+void initialiseState
+(
+    RBD::eABAMotion& model,
+    const dictionary& stateDict,
+    const scalarField& tau,
+    const Field<spatialVector>& fx
+)
+{
+    if (stateDict.found("qDdot"))
+    {
+        RBD::rigidBodyModelState s(model.state());
+        model.evaluate(s, tau, fx);
+        model.forwardDynamicsCorrection(model.state());
+    }
+    else
+    {
+        model.evaluate(model.state(), tau, fx);
+    }
+}
+
+
+// At a write time: the row of joints.dat, q to the log and the bodies'
+// status if the model reports
+void writeTime
+(
+    const Time& runTime,
+    const RBD::eABAMotion& model,
+    OFstream& os
+)
+{
+    model.writeJointsRow(os);
+    Info<< "Time = " << runTime.timeName()
+        << "  q = " << model.state().q() << endl;
+
+    if (model.report())
+    {
+        for (label bodyID = 1; bodyID < model.nBodies(); ++bodyID)
+        {
+            model.status(bodyID);
+        }
+    }
+}
+
+
+// Plain time loop: Time::run() would execute the function objects and
+// write their state dictionary at every write time
+void timeLoop
+(
+    Time& runTime,
+    RBD::eABAMotion& model,
+    const scalarField& tau,
+    const Field<spatialVector>& fx,
+    OFstream& os
+)
+{
+    const scalar endTime = runTime.endTime().value();
+
+    while (runTime.value() < endTime - 0.5*runTime.deltaTValue())
+    {
+        ++runTime;
+
+        model.newTime();
+        for (label iter = 0; iter < model.nIter(); ++iter)
+        {
+            model.solve(runTime.value(), runTime.deltaTValue(), tau, fx);
+        }
+
+        if (runTime.writeTime())
+        {
+            writeTime(runTime, model, os);
+        }
+    }
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
 int main(int argc, char *argv[])
 {
     argList::addNote
@@ -94,23 +206,7 @@ int main(int argc, char *argv[])
     const dictionary& modelDict =
         dynamicMeshDict.optionalSubDict("eABAMeshMotionCoeffs");
 
-    // Initial state: <startTime>/uniform/rigidBodyMotionState if present
-    IOobject stateIO(RBD::eABAMotion::stateIO(runTime));
-    const bool restart = stateIO.typeHeaderOk<IOdictionary>(false);
-    const dictionary stateDict
-    (
-        RBD::eABAMotion::initialState(runTime, dictionary())
-    );
-
-    if (restart)
-    {
-        Info<< "Initial state from " << stateIO.objectPath() << nl << endl;
-    }
-    else
-    {
-        Info<< "No " << stateIO.objectPath() << ": zero initial state"
-            << nl << endl;
-    }
+    const dictionary stateDict(readInitialState(runTime));
 
     RBD::eABAMotion model(runTime, modelDict, stateDict);
 
@@ -123,22 +219,8 @@ int main(int argc, char *argv[])
     const scalarField tau(model.nDoF(), Zero);
     const Field<spatialVector> fx(model.nBodies(), Zero);
 
-    // Consistent state at the start: exact prescribed joints, free
-    // accelerations and the prescribed joints' forces.  A restart keeps the
-    // stored accelerations (the next step starts from them, as a run that
-    // did not stop) and only evaluates the forces; a state without qDdot
-    // gets consistent accelerations.
     model.state().t() = runTime.value();
-    if (stateDict.found("qDdot"))
-    {
-        RBD::rigidBodyModelState s(model.state());
-        model.evaluate(s, tau, fx);
-        model.forwardDynamicsCorrection(model.state());
-    }
-    else
-    {
-        model.evaluate(model.state(), tau, fx);
-    }
+    initialiseState(model, stateDict, tau, fx);
 
     // Output table
     const fileName outputDir
@@ -155,35 +237,7 @@ int main(int argc, char *argv[])
 
     Info<< "Starting time loop" << nl << endl;
 
-    // Plain time loop: Time::run() would execute the function objects and
-    // write their state dictionary at every write time
-    const scalar endTime = runTime.endTime().value();
-
-    while (runTime.value() < endTime - 0.5*runTime.deltaTValue())
-    {
-        ++runTime;
-
-        model.newTime();
-        for (label iter = 0; iter < model.nIter(); ++iter)
-        {
-            model.solve(runTime.value(), runTime.deltaTValue(), tau, fx);
-        }
-
-        if (runTime.writeTime())
-        {
-            model.writeJointsRow(os);
-            Info<< "Time = " << runTime.timeName()
-                << "  q = " << model.state().q() << endl;
-
-            if (model.report())
-            {
-                for (label bodyID = 1; bodyID < model.nBodies(); ++bodyID)
-                {
-                    model.status(bodyID);
-                }
-            }
-        }
-    }
+    timeLoop(runTime, model, tau, fx, os);
 
     model.writeState(runTime);
 
