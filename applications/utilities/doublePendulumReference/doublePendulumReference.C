@@ -191,12 +191,12 @@ void readState
     }
 }
 
-} // End anonymous namespace
+typedef doublePendulum::vector2 vector2;
+typedef dormandPrince45::vector vectorN;
 
 
-// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
-
-int main(int argc, char *argv[])
+//- Add the utility's note and options
+void addOptions()
 {
     argList::addNote
     (
@@ -231,60 +231,93 @@ int main(int argc, char *argv[])
     argList::addOption("relTol", "value", "relative tolerance (1e-12)");
     argList::addOption("absTol", "value", "absolute tolerance (1e-12)");
     argList::addOption("output", "file", "(doublePendulumReference.dat)");
+}
 
-    argList args(argc, argv);
 
-    // Read every option first
+//- The settings: every option but the initial state, read and checked
+struct pendulumSettings
+{
+    const pendulumMode mode;
+    const bool prescribed;
+    const scalar l1;
+    const scalar l2;
+    const scalar m1;
+    const scalar m2;
+    const scalar g;
+    const scalar A;
+    const scalar f;
+    const scalar endTime;
+    const scalar writeInterval;
+    const scalar relTol;
+    const scalar absTol;
+    const fileName output;
+    const scalar omega;
 
-    const pendulumMode mode =
-        pendulumModeNames.get(args.getOrDefault<word>("mode", "prescribed"));
-    const bool prescribed = (mode == pendulumMode::prescribed);
-
-    const scalar l1 = getOption(args, "l1", 0.1, VSMALL);
-    const scalar l2 = getOption(args, "l2", 0.2, VSMALL);
-    const scalar m1 = getOption(args, "m1", 0.5, 0);
-    const scalar m2 = getOption(args, "m2", 0.5, VSMALL);
-    const scalar g = getOption(args, "g", 9.81);
-    const scalar A =
-        getOption(args, "A", 57*constant::mathematical::pi/180);
-    const scalar f = getOption(args, "f", 2, 0);
-    const scalar endTime = getOption(args, "endTime", 2, VSMALL);
-    const scalar writeInterval =
-        getOption(args, "writeInterval", 1e-3, VSMALL);
-    const scalar relTol = getOption(args, "relTol", 1e-12, 0, 1);
-    const scalar absTol = getOption(args, "absTol", 1e-12, 0, 1);
-    const fileName output =
-        args.getOrDefault<fileName>("output", "doublePendulumReference.dat");
-
-    if (relTol <= 0 && absTol <= 0)
+    explicit pendulumSettings(const argList& args)
+    :
+        mode
+        (
+            pendulumModeNames.get
+            (
+                args.getOrDefault<word>("mode", "prescribed")
+            )
+        ),
+        prescribed(mode == pendulumMode::prescribed),
+        l1(getOption(args, "l1", 0.1, VSMALL)),
+        l2(getOption(args, "l2", 0.2, VSMALL)),
+        m1(getOption(args, "m1", 0.5, 0)),
+        m2(getOption(args, "m2", 0.5, VSMALL)),
+        g(getOption(args, "g", 9.81)),
+        A(getOption(args, "A", 57*constant::mathematical::pi/180)),
+        f(getOption(args, "f", 2, 0)),
+        endTime(getOption(args, "endTime", 2, VSMALL)),
+        writeInterval(getOption(args, "writeInterval", 1e-3, VSMALL)),
+        relTol(getOption(args, "relTol", 1e-12, 0, 1)),
+        absTol(getOption(args, "absTol", 1e-12, 0, 1)),
+        output
+        (
+            args.getOrDefault<fileName>
+            (
+                "output",
+                "doublePendulumReference.dat"
+            )
+        ),
+        omega(constant::mathematical::twoPi*f)
     {
-        FatalErrorInFunction
-            << "-relTol and -absTol cannot both be 0" << exit(FatalError);
+        if (relTol <= 0 && absTol <= 0)
+        {
+            FatalErrorInFunction
+                << "-relTol and -absTol cannot both be 0" << exit(FatalError);
+        }
     }
 
-    const scalar omega = constant::mathematical::twoPi*f;
-
-    // Prescribed motion of joint 1 with exact derivatives
-    auto drive = [A, omega](const scalar t, scalar& th, scalar& thd, scalar& thdd)
+    //- Prescribed motion of joint 1 with exact derivatives
+    void drive(const scalar t, scalar& th, scalar& thd, scalar& thdd) const
     {
         th = A*std::cos(omega*t) - A;
         thd = -A*omega*std::sin(omega*t);
         thdd = -A*omega*omega*std::cos(omega*t);
-    };
+    }
+};
 
-    // Initial state (absolute angles)
+
+//- The initial integrated state: (th2, th2d, W) prescribed, (th1, th2,
+//- th1d, th2d) free, from the drive, -state and the -theta options
+vectorN initialState(const argList& args, const pendulumSettings& s)
+{
+    // Absolute angles
     scalar th10 = 0, th1d0 = 0, th20 = 0, th2d0 = 0;
-    if (prescribed)
+    if (s.prescribed)
     {
         scalar th1dd0;
-        drive(0, th10, th1d0, th1dd0);
+        s.drive(0, th10, th1d0, th1dd0);
     }
 
     if (args.found("state"))
     {
         scalarField q, qDot;
         readState(args.get<fileName>("state"), q, qDot);
-        if (!prescribed)
+        if (!s.prescribed)
         {
             th10 = q[0];
             th1d0 = qDot[0];
@@ -292,7 +325,7 @@ int main(int argc, char *argv[])
         th20 = th10 + q[1];
         th2d0 = th1d0 + qDot[1];
     }
-    if (!prescribed)
+    if (!s.prescribed)
     {
         args.readIfPresent("theta1", th10);
         args.readIfPresent("theta1Dot", th1d0);
@@ -306,19 +339,142 @@ int main(int argc, char *argv[])
     args.readIfPresent("theta2", th20);
     args.readIfPresent("theta2Dot", th2d0);
 
+    vectorN y;
+    if (s.prescribed)
+    {
+        y.resize(3);
+        y << th20, th2d0, 0;
+    }
+    else
+    {
+        y.resize(4);
+        y << th10, th20, th1d0, th2d0;
+    }
 
-    const doublePendulum model(l1, l2, m1, m2, g);
-    typedef doublePendulum::vector2 vector2;
-    typedef dormandPrince45::vector vectorN;
+    return y;
+}
 
-    // Right-hand sides
 
+//- The output file: header, one row per output time, and the energy
+//- balance max |E - E0 - W| over the rows
+class referenceTable
+{
+    const pendulumSettings& s_;
+    const doublePendulum& model_;
+    OFstream os_;
+    scalar E0_;
+    scalar maxEnergyError_;
+
+    //- Create the folder of the output file; return the file
+    static const fileName& makePath(const fileName& output)
+    {
+        if (!output.path().empty() && !isDir(output.path()))
+        {
+            mkDir(output.path());
+        }
+        return output;
+    }
+
+    //- Write the comment lines
+    void writeHeader()
+    {
+        os_ << "# doublePendulumReference: Lagrangian double pendulum,"
+            << " Dormand-Prince 5(4), relTol " << s_.relTol
+            << " absTol " << s_.absTol << nl
+            << "# angles from the downward vertical [rad]; theta2 absolute,"
+            << " theta2rel = theta2 - theta1; tau1 [N m]; E, W [J]" << nl
+            << "# parameters mode " << pendulumModeNames[s_.mode]
+            << " l1 " << s_.l1 << " l2 " << s_.l2
+            << " m1 " << s_.m1 << " m2 " << s_.m2
+            << " g " << s_.g << " A " << (s_.prescribed ? s_.A : 0)
+            << " f " << (s_.prescribed ? s_.f : 0) << nl
+            << "# time theta1 theta2 theta2rel theta1Dot theta2Dot"
+            << " theta1Ddot theta2Ddot tau1 E W" << nl;
+    }
+
+public:
+
+    referenceTable(const pendulumSettings& s, const doublePendulum& model)
+    :
+        s_(s),
+        model_(model),
+        os_(makePath(s.output)),
+        E0_(0),
+        maxEnergyError_(0)
+    {
+        if (!os_.good())
+        {
+            FatalErrorInFunction
+                << "Cannot open " << s_.output << " for writing"
+                << exit(FatalError);
+        }
+        os_.precision(16);
+
+        writeHeader();
+    }
+
+    //- Write the row of time t, integrated state y
+    void writeRow(const scalar t, const vectorN& y)
+    {
+        vector2 th, thd, thdd;
+        scalar tau1 = 0, W = 0;
+        if (s_.prescribed)
+        {
+            s_.drive(t, th(0), thd(0), thdd(0));
+            th(1) = y(0);
+            thd(1) = y(1);
+            thdd(1) = model_.theta2Ddot(th, thd(0), thdd(0));
+            tau1 = model_.tau1(th, thd, thdd);
+            W = y(2);
+        }
+        else
+        {
+            th = y.head<2>();
+            thd = y.tail<2>();
+            thdd = model_.freeAcceleration(th, thd);
+        }
+        const scalar E = model_.energy(th, thd);
+        if (t == 0)
+        {
+            E0_ = E;
+        }
+        maxEnergyError_ = std::max(maxEnergyError_, std::abs(E - E0_ - W));
+
+        os_ << t << ' ' << th(0) << ' ' << th(1) << ' ' << th(1) - th(0)
+            << ' ' << thd(0) << ' ' << thd(1)
+            << ' ' << thdd(0) << ' ' << thdd(1)
+            << ' ' << tau1 << ' ' << E << ' ' << W << nl;
+    }
+
+    scalar E0() const
+    {
+        return E0_;
+    }
+
+    scalar maxEnergyError() const
+    {
+        return maxEnergyError_;
+    }
+};
+
+
+//- Integrate y from 0 to endTime, a row at t = 0 and every writeInterval;
+//- return the number of intervals written
+label integrate
+(
+    const pendulumSettings& s,
+    const doublePendulum& model,
+    dormandPrince45& solver,
+    referenceTable& table,
+    vectorN& y
+)
+{
     // prescribed: y = (th2, th2d, W)
     auto rhsPrescribed =
-        [&model, &drive](const scalar t, const vectorN& y, vectorN& dydt)
+        [&model, &s](const scalar t, const vectorN& y, vectorN& dydt)
     {
         scalar th1, th1d, th1dd;
-        drive(t, th1, th1d, th1dd);
+        s.drive(t, th1, th1d, th1dd);
         const vector2 th(th1, y(0));
         const scalar th2dd = model.theta2Ddot(th, th1d, th1dd);
         const scalar tau1 =
@@ -337,88 +493,13 @@ int main(int argc, char *argv[])
         dydt.tail<2>() = thdd;
     };
 
-    vectorN y;
-    if (prescribed)
-    {
-        y.resize(3);
-        y << th20, th2d0, 0;
-    }
-    else
-    {
-        y.resize(4);
-        y << th10, th20, th1d0, th2d0;
-    }
-
-    // Output
-
-    if (!output.path().empty() && !isDir(output.path()))
-    {
-        mkDir(output.path());
-    }
-    OFstream os(output);
-    if (!os.good())
-    {
-        FatalErrorInFunction
-            << "Cannot open " << output << " for writing" << exit(FatalError);
-    }
-    os.precision(16);
-
-    os  << "# doublePendulumReference: Lagrangian double pendulum,"
-        << " Dormand-Prince 5(4), relTol " << relTol << " absTol " << absTol
-        << nl
-        << "# angles from the downward vertical [rad]; theta2 absolute,"
-        << " theta2rel = theta2 - theta1; tau1 [N m]; E, W [J]" << nl
-        << "# parameters mode " << pendulumModeNames[mode]
-        << " l1 " << l1 << " l2 " << l2 << " m1 " << m1 << " m2 " << m2
-        << " g " << g << " A " << (prescribed ? A : 0)
-        << " f " << (prescribed ? f : 0) << nl
-        << "# time theta1 theta2 theta2rel theta1Dot theta2Dot theta1Ddot"
-        << " theta2Ddot tau1 E W" << nl;
-
-    scalar E0 = 0;
-    scalar maxEnergyError = 0;
-
-    auto writeRow = [&](const scalar t)
-    {
-        vector2 th, thd, thdd;
-        scalar tau1 = 0, W = 0;
-        if (prescribed)
-        {
-            drive(t, th(0), thd(0), thdd(0));
-            th(1) = y(0);
-            thd(1) = y(1);
-            thdd(1) = model.theta2Ddot(th, thd(0), thdd(0));
-            tau1 = model.tau1(th, thd, thdd);
-            W = y(2);
-        }
-        else
-        {
-            th = y.head<2>();
-            thd = y.tail<2>();
-            thdd = model.freeAcceleration(th, thd);
-        }
-        const scalar E = model.energy(th, thd);
-        if (t == 0)
-        {
-            E0 = E;
-        }
-        maxEnergyError = std::max(maxEnergyError, std::abs(E - E0 - W));
-
-        os  << t << ' ' << th(0) << ' ' << th(1) << ' ' << th(1) - th(0)
-            << ' ' << thd(0) << ' ' << thd(1)
-            << ' ' << thdd(0) << ' ' << thdd(1)
-            << ' ' << tau1 << ' ' << E << ' ' << W << nl;
-    };
-
-    dormandPrince45 solver(relTol, absTol);
-
-    const label nWrite = std::ceil(endTime/writeInterval - 1e-9);
-    writeRow(0);
+    const label nWrite = std::ceil(s.endTime/s.writeInterval - 1e-9);
+    table.writeRow(0, y);
     scalar t = 0;
     for (label i = 1; i <= nWrite; ++i)
     {
-        const scalar tNext = std::min(i*writeInterval, endTime);
-        if (prescribed)
+        const scalar tNext = std::min(i*s.writeInterval, s.endTime);
+        if (s.prescribed)
         {
             solver.integrate(rhsPrescribed, t, tNext, y);
         }
@@ -427,16 +508,42 @@ int main(int argc, char *argv[])
             solver.integrate(rhsFree, t, tNext, y);
         }
         t = tNext;
-        writeRow(t);
+        table.writeRow(t, y);
     }
 
-    Info<< "Mode " << pendulumModeNames[mode] << ": " << nWrite + 1
-        << " rows written to " << output << nl
+    return nWrite;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    addOptions();
+
+    argList args(argc, argv);
+
+    const pendulumSettings s(args);
+
+    vectorN y(initialState(args, s));
+
+    const doublePendulum model(s.l1, s.l2, s.m1, s.m2, s.g);
+
+    referenceTable table(s, model);
+
+    dormandPrince45 solver(s.relTol, s.absTol);
+
+    const label nWrite = integrate(s, model, solver, table, y);
+
+    Info<< "Mode " << pendulumModeNames[s.mode] << ": " << nWrite + 1
+        << " rows written to " << s.output << nl
         << "Dormand-Prince 5(4): " << solver.nAccepted() << " steps, "
         << solver.nRejected() << " rejected, " << solver.nEval()
         << " evaluations" << nl
-        << "Energy balance max |E - E0 - W| = " << maxEnergyError
-        << " J (E0 = " << E0 << " J)" << nl
+        << "Energy balance max |E - E0 - W| = " << table.maxEnergyError()
+        << " J (E0 = " << table.E0() << " J)" << nl
         << "\nEnd\n" << endl;
 
     return 0;
