@@ -57,6 +57,140 @@ Usage
 
 using namespace Foam;
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// Per-zone counts summed over the ranks
+void sumOverRanks(labelList& counts)
+{
+    Pstream::listCombineGather(counts, plusEqOp<label>());
+    Pstream::listCombineScatter(counts);
+}
+
+
+// The option -maxHoleFraction, checked: in (0, 1]
+scalar readMaxHoleFraction(const argList& args)
+{
+    const scalar maxHoleFraction =
+        args.getOrDefault<scalar>("maxHoleFraction", 0.25);
+    if (maxHoleFraction <= 0 || maxHoleFraction > 1)
+    {
+        FatalErrorInFunction
+            << "-maxHoleFraction " << maxHoleFraction
+            << ": a fraction in (0, 1] is allowed" << exit(FatalError);
+    }
+
+    return maxHoleFraction;
+}
+
+
+// Cells per zone, summed over the ranks
+labelList countZoneCells(const labelUList& zoneID, const label nZones)
+{
+    labelList zoneCells(nZones, Zero);
+    forAll(zoneID, celli)
+    {
+        ++zoneCells[zoneID[celli]];
+    }
+    sumOverRanks(zoneCells);
+
+    return zoneCells;
+}
+
+
+// The overset assembly of one step, summed over the ranks
+struct stepCounts
+{
+    //- Interpolated cells per zone
+    labelList nInterp;
+
+    //- Hole cells per zone
+    labelList nHoles;
+
+    //- Interpolated cells with an empty donor stencil
+    label nOrphans;
+
+    //- Count the cell types of the mesh's current stencil
+    stepCounts(const fvMesh& mesh, const labelUList& zoneID, label nZones)
+    :
+        nInterp(nZones, Zero),
+        nHoles(nZones, Zero),
+        nOrphans(0)
+    {
+        const cellCellStencilObject& overlap = Stencil::New(mesh);
+        const labelUList& types = overlap.cellTypes();
+        const labelListList& stencil = overlap.cellStencil();
+
+        forAll(types, celli)
+        {
+            if (types[celli] == cellCellStencil::INTERPOLATED)
+            {
+                ++nInterp[zoneID[celli]];
+                if (stencil[celli].empty())
+                {
+                    ++nOrphans;
+                }
+            }
+            else if (types[celli] == cellCellStencil::HOLE)
+            {
+                ++nHoles[zoneID[celli]];
+            }
+        }
+        sumOverRanks(nInterp);
+        sumOverRanks(nHoles);
+        reduce(nOrphans, sumOp<label>());
+    }
+};
+
+
+// Log the step's counts, update maxHoles and check the limits: true (with
+// the reason logged) if the step fails
+bool checkStep
+(
+    const Time& runTime,
+    const stepCounts& counts,
+    const labelUList& zoneCells,
+    const scalar maxHoleFraction,
+    labelList& maxHoles
+)
+{
+    const labelList& nHoles = counts.nHoles;
+    bool failed = false;
+
+    Info<< "Time = " << runTime.timeName()
+        << " interpolated " << counts.nInterp
+        << " holes " << nHoles
+        << " no-donor " << counts.nOrphans << endl;
+
+    forAll(nHoles, zonei)
+    {
+        maxHoles[zonei] = max(maxHoles[zonei], nHoles[zonei]);
+        if (nHoles[zonei] > maxHoleFraction*zoneCells[zonei])
+        {
+            Info<< "oversetMotionCheck: FAILED at time "
+                << runTime.timeName() << ": zone " << zonei << " has "
+                << nHoles[zonei] << " holes of " << zoneCells[zonei]
+                << " cells (more than -maxHoleFraction "
+                << maxHoleFraction << ")" << endl;
+            failed = true;
+        }
+    }
+    if (counts.nOrphans)
+    {
+        Info<< "oversetMotionCheck: FAILED at time "
+            << runTime.timeName() << ": " << counts.nOrphans
+            << " interpolated cells without donors" << endl;
+        failed = true;
+    }
+
+    return failed;
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 int main(int argc, char *argv[])
@@ -80,31 +214,12 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     #include "createDynamicFvMesh.H"
 
-    const scalar maxHoleFraction =
-        args.getOrDefault<scalar>("maxHoleFraction", 0.25);
-    if (maxHoleFraction <= 0 || maxHoleFraction > 1)
-    {
-        FatalErrorInFunction
-            << "-maxHoleFraction " << maxHoleFraction
-            << ": a fraction in (0, 1] is allowed" << exit(FatalError);
-    }
+    const scalar maxHoleFraction = readMaxHoleFraction(args);
 
     const labelIOList& zoneID = cellCellStencil::zoneID(mesh);
     const label nZones = returnReduce(max(zoneID) + 1, maxOp<label>());
 
-    // Per-zone counts summed over the ranks
-    auto sumOverRanks = [](labelList& counts)
-    {
-        Pstream::listCombineGather(counts, plusEqOp<label>());
-        Pstream::listCombineScatter(counts);
-    };
-
-    labelList zoneCells(nZones, Zero);
-    forAll(zoneID, celli)
-    {
-        ++zoneCells[zoneID[celli]];
-    }
-    sumOverRanks(zoneCells);
+    const labelList zoneCells(countZoneCells(zoneID, nZones));
     Info<< "Zones (cells): " << zoneCells << nl << endl;
 
     labelList maxHoles(nZones, Zero);
@@ -117,57 +232,9 @@ int main(int argc, char *argv[])
         mesh.update();
         ++nSteps;
 
-        const cellCellStencilObject& overlap = Stencil::New(mesh);
-        const labelUList& types = overlap.cellTypes();
-        const labelListList& stencil = overlap.cellStencil();
-
-        labelList nInterp(nZones, Zero);
-        labelList nHoles(nZones, Zero);
-        label nOrphans = 0;
-        forAll(types, celli)
-        {
-            if (types[celli] == cellCellStencil::INTERPOLATED)
-            {
-                ++nInterp[zoneID[celli]];
-                if (stencil[celli].empty())
-                {
-                    ++nOrphans;
-                }
-            }
-            else if (types[celli] == cellCellStencil::HOLE)
-            {
-                ++nHoles[zoneID[celli]];
-            }
-        }
-        sumOverRanks(nInterp);
-        sumOverRanks(nHoles);
-        reduce(nOrphans, sumOp<label>());
-
-        Info<< "Time = " << runTime.timeName()
-            << " interpolated " << nInterp
-            << " holes " << nHoles
-            << " no-donor " << nOrphans << endl;
-
-        forAll(nHoles, zonei)
-        {
-            maxHoles[zonei] = max(maxHoles[zonei], nHoles[zonei]);
-            if (nHoles[zonei] > maxHoleFraction*zoneCells[zonei])
-            {
-                Info<< "oversetMotionCheck: FAILED at time "
-                    << runTime.timeName() << ": zone " << zonei << " has "
-                    << nHoles[zonei] << " holes of " << zoneCells[zonei]
-                    << " cells (more than -maxHoleFraction "
-                    << maxHoleFraction << ")" << endl;
-                failed = true;
-            }
-        }
-        if (nOrphans)
-        {
-            Info<< "oversetMotionCheck: FAILED at time "
-                << runTime.timeName() << ": " << nOrphans
-                << " interpolated cells without donors" << endl;
-            failed = true;
-        }
+        const stepCounts counts(mesh, zoneID, nZones);
+        failed =
+            checkStep(runTime, counts, zoneCells, maxHoleFraction, maxHoles);
 
         if (failed)
         {
