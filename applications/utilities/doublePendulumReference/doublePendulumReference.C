@@ -366,96 +366,115 @@ class referenceTable
     scalar maxEnergyError_;
 
     //- Create the folder of the output file; return the file
-    static const fileName& makePath(const fileName& output)
-    {
-        if (!output.path().empty() && !isDir(output.path()))
-        {
-            mkDir(output.path());
-        }
-        return output;
-    }
+    static const fileName& makePath(const fileName& output);
 
     //- Write the comment lines
-    void writeHeader()
-    {
-        os_ << "# doublePendulumReference: Lagrangian double pendulum,"
-            << " Dormand-Prince 5(4), relTol " << s_.relTol
-            << " absTol " << s_.absTol << nl
-            << "# angles from the downward vertical [rad]; theta2 absolute,"
-            << " theta2rel = theta2 - theta1; tau1 [N m]; E, W [J]" << nl
-            << "# parameters mode " << pendulumModeNames[s_.mode]
-            << " l1 " << s_.l1 << " l2 " << s_.l2
-            << " m1 " << s_.m1 << " m2 " << s_.m2
-            << " g " << s_.g << " A " << (s_.prescribed ? s_.A : 0)
-            << " f " << (s_.prescribed ? s_.f : 0) << nl
-            << "# time theta1 theta2 theta2rel theta1Dot theta2Dot"
-            << " theta1Ddot theta2Ddot tau1 E W" << nl;
-    }
+    void writeHeader();
 
 public:
 
-    referenceTable(const pendulumSettings& s, const doublePendulum& model)
-    :
-        s_(s),
-        model_(model),
-        os_(makePath(s.output)),
-        E0_(0),
-        maxEnergyError_(0)
-    {
-        if (!os_.good())
-        {
-            FatalErrorInFunction
-                << "Cannot open " << s_.output << " for writing"
-                << exit(FatalError);
-        }
-        os_.precision(16);
-
-        writeHeader();
-    }
+    //- Open the file (fatal if it cannot) and write the header
+    referenceTable(const pendulumSettings& s, const doublePendulum& model);
 
     //- Write the row of time t, integrated state y
-    void writeRow(const scalar t, const vectorN& y)
-    {
-        vector2 th, thd, thdd;
-        scalar tau1 = 0, W = 0;
-        if (s_.prescribed)
-        {
-            s_.drive(t, th(0), thd(0), thdd(0));
-            th(1) = y(0);
-            thd(1) = y(1);
-            thdd(1) = model_.theta2Ddot(th, thd(0), thdd(0));
-            tau1 = model_.tau1(th, thd, thdd);
-            W = y(2);
-        }
-        else
-        {
-            th = y.head<2>();
-            thd = y.tail<2>();
-            thdd = model_.freeAcceleration(th, thd);
-        }
-        const scalar E = model_.energy(th, thd);
-        if (t == 0)
-        {
-            E0_ = E;
-        }
-        maxEnergyError_ = std::max(maxEnergyError_, std::abs(E - E0_ - W));
+    void writeRow(const scalar t, const vectorN& y);
 
-        os_ << t << ' ' << th(0) << ' ' << th(1) << ' ' << th(1) - th(0)
-            << ' ' << thd(0) << ' ' << thd(1)
-            << ' ' << thdd(0) << ' ' << thdd(1)
-            << ' ' << tau1 << ' ' << E << ' ' << W << nl;
-    }
-
+    //- Energy at t = 0 [J]
     scalar E0() const
     {
         return E0_;
     }
 
+    //- Largest |E - E0 - W| over the rows written [J]
     scalar maxEnergyError() const
     {
         return maxEnergyError_;
     }
 };
+
+
+const fileName& referenceTable::makePath(const fileName& output)
+{
+    if (!output.path().empty() && !isDir(output.path()))
+    {
+        mkDir(output.path());
+    }
+    return output;
+}
+
+
+void referenceTable::writeHeader()
+{
+    os_ << "# doublePendulumReference: Lagrangian double pendulum,"
+        << " Dormand-Prince 5(4), relTol " << s_.relTol
+        << " absTol " << s_.absTol << nl
+        << "# angles from the downward vertical [rad]; theta2 absolute,"
+        << " theta2rel = theta2 - theta1; tau1 [N m]; E, W [J]" << nl
+        << "# parameters mode " << pendulumModeNames[s_.mode]
+        << " l1 " << s_.l1 << " l2 " << s_.l2
+        << " m1 " << s_.m1 << " m2 " << s_.m2
+        << " g " << s_.g << " A " << (s_.prescribed ? s_.A : 0)
+        << " f " << (s_.prescribed ? s_.f : 0) << nl
+        << "# time theta1 theta2 theta2rel theta1Dot theta2Dot"
+        << " theta1Ddot theta2Ddot tau1 E W" << nl;
+}
+
+
+referenceTable::referenceTable
+(
+    const pendulumSettings& s,
+    const doublePendulum& model
+)
+:
+    s_(s),
+    model_(model),
+    os_(makePath(s.output)),
+    E0_(0),
+    maxEnergyError_(0)
+{
+    if (!os_.good())
+    {
+        FatalErrorInFunction
+            << "Cannot open " << s_.output << " for writing"
+            << exit(FatalError);
+    }
+    os_.precision(16);
+
+    writeHeader();
+}
+
+
+void referenceTable::writeRow(const scalar t, const vectorN& y)
+{
+    vector2 th, thd, thdd;
+    scalar tau1 = 0, W = 0;
+    if (s_.prescribed)
+    {
+        s_.drive(t, th(0), thd(0), thdd(0));
+        th(1) = y(0);
+        thd(1) = y(1);
+        thdd(1) = model_.theta2Ddot(th, thd(0), thdd(0));
+        tau1 = model_.tau1(th, thd, thdd);
+        W = y(2);
+    }
+    else
+    {
+        th = y.head<2>();
+        thd = y.tail<2>();
+        thdd = model_.freeAcceleration(th, thd);
+    }
+    const scalar E = model_.energy(th, thd);
+    if (t == 0)
+    {
+        E0_ = E;
+    }
+    maxEnergyError_ = std::max(maxEnergyError_, std::abs(E - E0_ - W));
+
+    os_ << t << ' ' << th(0) << ' ' << th(1) << ' ' << th(1) - th(0)
+        << ' ' << thd(0) << ' ' << thd(1)
+        << ' ' << thdd(0) << ' ' << thdd(1)
+        << ' ' << tau1 << ' ' << E << ' ' << W << nl;
+}
 
 
 //- Integrate y from 0 to endTime, a row at t = 0 and every writeInterval;
