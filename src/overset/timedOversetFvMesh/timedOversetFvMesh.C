@@ -109,7 +109,7 @@ bool Foam::timedOversetFvMesh::readTimeWait() const
     {
         return true;
     }
-    return IOdictionary(dictHeader).getOrDefault<bool>("timeWait", true);
+    return IOdictionary(dictHeader).getOrDefault<bool>("timeWait", false);
 }
 
 

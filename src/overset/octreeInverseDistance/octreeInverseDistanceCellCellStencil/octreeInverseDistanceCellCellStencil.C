@@ -173,7 +173,7 @@ void Foam::cellCellStencils::octreeInverseDistance::readNumbers()
             << exit(FatalIOError);
     }
 
-    log_ = dict_.getOrDefault<bool>("log", true);
+    log_ = dict_.getOrDefault<bool>("log", false);
 }
 
 
