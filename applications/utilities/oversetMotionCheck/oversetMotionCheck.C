@@ -43,10 +43,12 @@ Description
 
     The motion is the one the solver would compute with no fluid load: for
     eABAMeshMotion set fluidLoad off in its coefficients (the drone cases'
-    Allrun does that with -motionOnly).
+    Allrun does that with -motionOnly).  The function objects of
+    system/controlDict run as in a solver (the drone cases: flight data,
+    joints.dat/bodies.dat, step timers), unless -noFunctionObjects.
 
 Usage
-    \b oversetMotionCheck [-maxHoleFraction F] [-parallel]
+    \b oversetMotionCheck [-maxHoleFraction F] [-noFunctionObjects] [-parallel]
 
 \*---------------------------------------------------------------------------*/
 
@@ -201,7 +203,6 @@ int main(int argc, char *argv[])
         " check the overset assembly (holes per zone, acceptors without"
         " donors) at every time step"
     );
-    argList::noFunctionObjects();
     argList::addOption
     (
         "maxHoleFraction",
