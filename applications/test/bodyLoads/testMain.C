@@ -37,24 +37,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
-#include "error.H"
-
-#include <gtest/gtest.h>
-
-using namespace Foam;
-
-// * * * * * * * * * * * * * * * * * * main  * * * * * * * * * * * * * * * * //
-
-int main(int argc, char* argv[])
-{
-    ::testing::InitGoogleTest(&argc, argv);
-
-    // Bad input must throw (caught and checked by the tests), not exit
-    FatalError.throwExceptions();
-    FatalIOError.throwExceptions();
-
-    return RUN_ALL_TESTS();
-}
+#include "throwingTestMain.H"
 
 
 // ************************************************************************* //
