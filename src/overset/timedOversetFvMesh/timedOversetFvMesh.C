@@ -24,6 +24,7 @@ License
 #include "addToRunTimeSelectionTable.H"
 #include "volFields.H"
 #include "coupledFvPatchField.H"
+#include "oversetRankReport.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -33,6 +34,14 @@ namespace Foam
 
     addToRunTimeSelectionTable(dynamicFvMesh, timedOversetFvMesh, IOobject);
 }
+
+const Foam::Enum<Foam::timedOversetFvMesh::rankReportMode>
+Foam::timedOversetFvMesh::rankReportModeNames
+({
+    { rankReportMode::none, "none" },
+    { rankReportMode::first, "first" },
+    { rankReportMode::every, "every" },
+});
 
 const Foam::word Foam::timedOversetFvMesh::movePointsPart
 (
@@ -94,7 +103,7 @@ void Foam::timedOversetFvMesh::correctCoupledPatches()
 }
 
 
-bool Foam::timedOversetFvMesh::readTimeWait() const
+void Foam::timedOversetFvMesh::readOptions()
 {
     IOobject dictHeader
     (
@@ -107,9 +116,34 @@ bool Foam::timedOversetFvMesh::readTimeWait() const
     );
     if (!dictHeader.typeHeaderOk<IOdictionary>(false, false))
     {
-        return true;
+        return;
     }
-    return IOdictionary(dictHeader).getOrDefault<bool>("timeWait", false);
+    const IOdictionary dict(dictHeader);
+    timeWait_ =
+        Pstream::parRun() && dict.getOrDefault<bool>("timeWait", false);
+    const word mode(dict.getOrDefault<word>("rankReport", "first"));
+    if (!rankReportModeNames.found(mode))
+    {
+        FatalIOErrorInFunction(dict)
+            << "rankReport " << mode << " in " << dict.name()
+            << ": valid values are " << rankReportModeNames
+            << exit(FatalIOError);
+    }
+    rankReport_ = rankReportModeNames[mode];
+}
+
+
+void Foam::timedOversetFvMesh::reportRanks()
+{
+    if
+    (
+        rankReport_ == rankReportMode::every
+     || (rankReport_ == rankReportMode::first && !reported_)
+    )
+    {
+        oversetRankReport(*this).write(Info);
+        reported_ = true;
+    }
 }
 
 
@@ -120,8 +154,12 @@ Foam::timedOversetFvMesh::timedOversetFvMesh(const IOobject& io)
     dynamicOversetFvMesh(io),
     timers_(stepTimers::New(io.time())),
     updating_(false),
-    timeWait_(Pstream::parRun() && readTimeWait())
+    timeWait_(false),
+    rankReport_(rankReportMode::first),
+    reported_(false)
 {
+    readOptions();
+
     // Register the parts in the order of a step, for the file header
     timers_.add(movePointsPart, 0);
     timers_.add(addressingPart, 0);
@@ -205,6 +243,8 @@ bool Foam::timedOversetFvMesh::update()
     }
 
     updating_ = false;
+
+    reportRanks();
 
     timers_.stamp(stepTimers::meshUpdated);
 
