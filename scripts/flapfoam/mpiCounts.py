@@ -1,0 +1,158 @@
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
+"""
+The MPI counts of a run under libflapFoamMPICounters.so (src/mpiCounters:
+calls and bytes per MPI function of each rank, in FLAPFOAM_MPI_COUNTS/rank<N>,
+written at MPI_Finalize; what "bytes" means per function is in
+src/mpiCounters/mpiCounters.H): read a folder into per-rank counts and
+totals, and take the difference of two runs of N1 and N2 steps for the
+traffic of one step.  Standard library only.
+
+    python3 -m flapfoam.mpiCounts DIR                per-rank totals
+    python3 -m flapfoam.mpiCounts DIR1 N1 DIR2 N2    per-rank totals per step
+"""
+
+import os
+import sys
+
+KINDS = ("p2p", "collective")
+TOTALS = ("p2pCalls", "p2pBytes", "destinations", "collectiveCalls",
+          "collectiveBytes")
+
+
+def _int(fname, key, word):
+    """A non-negative integer of a file, or ValueError naming it."""
+    if not word.isdigit():
+        raise ValueError("%s: %s: '%s' is not a non-negative integer"
+                         % (fname, key, word))
+    return int(word)
+
+
+def read_rank(fname):
+    """One rank's file: {"rank", "nRanks", "destinations" (distinct over
+    all point-to-point functions), "functions": {name: {"kind", "calls",
+    "bytes", "destinations" (None for a collective)}}}."""
+    counts = {"functions": {}}
+    with open(fname) as f:
+        for line in f:
+            words = line.split()
+            if not words or words[0].startswith("#"):
+                continue
+            if len(words) == 2 and words[0] in ("rank", "nRanks",
+                                                "destinations"):
+                counts[words[0]] = _int(fname, words[0], words[1])
+            elif len(words) == 5 and words[1] in KINDS:
+                name, kind, calls, nbytes, dests = words
+                counts["functions"][name] = {
+                    "kind": kind,
+                    "calls": _int(fname, name, calls),
+                    "bytes": _int(fname, name, nbytes),
+                    "destinations":
+                        None if dests == "-" else _int(fname, name, dests)}
+            else:
+                raise ValueError(
+                    "%s: unknown line '%s' (allowed: 'rank N', 'nRanks N', "
+                    "'destinations N', 'MPI_name p2p|collective calls bytes "
+                    "destinations|-')" % (fname, line.strip()))
+    for key in ("rank", "nRanks", "destinations"):
+        if key not in counts:
+            raise ValueError("%s: no '%s' line" % (fname, key))
+    return counts
+
+
+def read_counts(directory):
+    """The counts of every rank of a run (list index = rank), checked: one
+    file rank<N> for each of the nRanks ranks, all of the same run."""
+    first = os.path.join(directory, "rank0")
+    if not os.path.isfile(first):
+        raise ValueError("%s: no MPI counts file (FLAPFOAM_MPI_COUNTS of a "
+                         "run under libflapFoamMPICounters.so)" % first)
+    ranks = [read_rank(first)]
+    n = ranks[0]["nRanks"]
+    for r in range(1, n):
+        fname = os.path.join(directory, "rank%d" % r)
+        if not os.path.isfile(fname):
+            raise ValueError("%s: missing (rank0 says nRanks %d; a rank "
+                             "that did not reach MPI_Finalize?)" % (fname, n))
+        ranks.append(read_rank(fname))
+    for r, c in enumerate(ranks):
+        if c["rank"] != r or c["nRanks"] != n:
+            raise ValueError("%s: rank %d of %d, expected rank %d of %d"
+                             % (os.path.join(directory, "rank%d" % r),
+                                c["rank"], c["nRanks"], r, n))
+    return ranks
+
+
+def totals(counts):
+    """One rank's totals: calls and bytes of the point-to-point functions
+    and of the collectives, and its distinct destinations."""
+    t = dict.fromkeys(TOTALS, 0)
+    for f in counts["functions"].values():
+        prefix = "p2p" if f["kind"] == "p2p" else "collective"
+        t[prefix + "Calls"] += f["calls"]
+        t[prefix + "Bytes"] += f["bytes"]
+    t["destinations"] = counts["destinations"]
+    return t
+
+
+def rank_totals(directory):
+    """The totals of every rank of a run (list index = rank)."""
+    return [totals(c) for c in read_counts(directory)]
+
+
+def difference(later, earlier):
+    """Counts of one rank of a longer run minus those of a shorter one
+    (calls and bytes; the destinations are the longer run's)."""
+    functions = {}
+    for name, f in later["functions"].items():
+        e = earlier["functions"].get(name, {"calls": 0, "bytes": 0})
+        functions[name] = dict(f, calls=f["calls"] - e["calls"],
+                               bytes=f["bytes"] - e["bytes"])
+    return dict(later, functions=functions)
+
+
+def per_step(dir1, n1, dir2, n2):
+    """Per-rank totals per step: (run of n2 steps - run of n1 steps) /
+    (n2 - n1), which leaves out the start-up and the end of a run.  Values
+    are floats; a whole number where the steps' traffic is the same."""
+    if n2 <= n1:
+        raise ValueError("per_step: N2 (%s) must be larger than N1 (%s)"
+                         % (n2, n1))
+    short, long_ = read_counts(dir1), read_counts(dir2)
+    if len(short) != len(long_):
+        raise ValueError("per_step: %s has %d ranks, %s %d"
+                         % (dir1, len(short), dir2, len(long_)))
+    steps = []
+    for a, b in zip(short, long_):
+        t = totals(difference(b, a))
+        steps.append({k: (v if k == "destinations" else v/(n2 - n1))
+                      for k, v in t.items()})
+    return steps
+
+
+def _number(v):
+    """A count as text: exact where whole."""
+    return "%d" % v if float(v).is_integer() else "%.3f" % v
+
+
+def _print(rows):
+    print("rank " + " ".join(TOTALS))
+    for r, t in enumerate(rows):
+        print("%d %s" % (r, " ".join(_number(t[k]) for k in TOTALS)))
+
+
+def main(argv):
+    if len(argv) == 1:
+        _print(rank_totals(argv[0]))
+    elif len(argv) == 4:
+        _print(per_step(argv[0], int(argv[1]), argv[2], int(argv[3])))
+    else:
+        sys.exit(__doc__)
+
+
+if __name__ == "__main__":
+    try:
+        main(sys.argv[1:])
+    except ValueError as err:
+        sys.exit("mpiCounts: %s" % err)
