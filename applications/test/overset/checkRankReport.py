@@ -1,0 +1,202 @@
+#!/usr/bin/python3
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
+"""
+Check the per-rank overset report (Foam::oversetRankReport, the lines
+"oversetRankReport: ..." that timedOversetFvMesh writes after the first
+mesh update) in the solver logs of a serial and a parallel run of the same
+case, for the stencils given (default: inverseDistance and
+octreeInverseDistance).
+
+Usage: checkRankReport.py SERIAL PARALLEL [-stencils S...]
+  SERIAL/S and PARALLEL/S are cases with log.overPimpleDyMFoam (e.g.
+  compareMotion's -dir without and with -np).
+Checks, per stencil:
+  - each log holds one report (rankReport's default: the first update),
+    with one row per rank, total/max/mean rows equal to the sums, maxima
+    and means of the rows, cellImbalance = max/mean of cells, remoteShare
+    = remote/acceptors, remote = mixed + allRemote, haloBytes = 8
+    procFaces;
+  - serial: one row, nothing remote, no processor face, nothing sent;
+  - parallel: the rows' cells add up to the serial cells and the acceptors
+    to the serial acceptors; every processor face is seen from both sides
+    (total procFaces even; with 2 ranks both rows equal); cells sent =
+    cells received and send messages = receive messages over all ranks;
+  - the stock inverseDistance: its own count of the same update ("interpolated
+    : N (interpolated from local:a  mixed local/remote:b  remote:c)", which
+    counts a donor slot >= nCells as remote) gives N = acceptors, a =
+    acceptors - remote, b = mixed, c = allRemote (so the report, which
+    sends each cell's rank through the stencil's map, and the slot order
+    agree);
+  - every other stencil: its rows equal the stock stencil's rows (the same
+    donors: compareMotion checks that the stencils agree).
+PASS/FAIL lines; exit status 1 if a check fails.
+"""
+
+import argparse
+import os
+import re
+import sys
+
+PREFIX = "oversetRankReport:"
+STOCK = "inverseDistance"
+ANALYSIS = re.compile(
+    r"interpolated : (\d+) \(interpolated from local:(\d+)\s+"
+    r"mixed local/remote:(\d+)\s+remote:(\d+)\)")
+
+
+def readReports(log):
+    """The reports of a log, each a dict: time, stencil, ranks, columns,
+    rows (per rank), total, max, mean, cellImbalance, remoteShare and
+    analysis (the stock stencil's last count line before it, or None)."""
+    reports, analysis = [], None
+    for line in open(log, errors="replace"):
+        m = ANALYSIS.search(line)
+        if m:
+            analysis = tuple(int(x) for x in m.groups())
+        if not line.startswith(PREFIX):
+            continue
+        words = line[len(PREFIX):].split()
+        if words[0] == "time":
+            reports.append(dict(time=words[1], stencil=words[3],
+                                ranks=int(words[5]), rows=[],
+                                analysis=analysis))
+            continue
+        r = reports[-1]
+        if words[0] == "rank":
+            r["columns"] = words[1:]
+        elif words[0] == "cellImbalance":
+            r["cellImbalance"] = float(words[1])
+            r["remoteShare"] = float(words[3])
+        elif words[0] == "mean":
+            r["mean"] = dict(zip(r["columns"], map(float, words[1:])))
+        else:
+            row = dict(zip(r["columns"], map(int, words[1:])))
+            if words[0] in ("total", "max"):
+                r[words[0]] = row
+            else:
+                r["rows"].append(row)
+    return reports
+
+
+class checker:
+    def __init__(self):
+        self.failed = 0
+
+    def check(self, ok, what):
+        print(("PASS " if ok else "FAIL ") + what)
+        self.failed += not ok
+        return ok
+
+
+def close(a, b):
+    return abs(a - b) <= 1e-6*max(1.0, abs(b))
+
+
+def checkTable(c, name, r):
+    """The derived rows and figures of one report"""
+    rows, cols = r["rows"], r["columns"]
+    total = {k: sum(row[k] for row in rows) for k in cols}
+    largest = {k: max(row[k] for row in rows) for k in cols}
+    mean = {k: total[k]/len(rows) for k in cols}
+    share = total["remote"]/total["acceptors"] if total["acceptors"] else 0
+    c.check(len(rows) == r["ranks"]
+            and r["total"] == total and r["max"] == largest
+            and all(close(r["mean"][k], mean[k]) for k in cols)
+            and close(r["cellImbalance"], largest["cells"]/mean["cells"])
+            and close(r["remoteShare"], share)
+            and all(row["remote"] == row["mixed"] + row["allRemote"]
+                    and row["haloBytes"] == 8*row["procFaces"]
+                    for row in rows),
+            "%s: %d rows, total/max/mean rows, cellImbalance %g, "
+            "remoteShare %g, remote = mixed + allRemote, haloBytes = 8 "
+            "procFaces" % (name, len(rows), r["cellImbalance"],
+                           r["remoteShare"]))
+
+
+def oneReport(c, name, case):
+    log = os.path.join(case, "log.overPimpleDyMFoam")
+    reports = readReports(log) if os.path.isfile(log) else []
+    if not c.check(len(reports) == 1, "%s: one report in %s (found %d)"
+                   % (name, log, len(reports))):
+        return None
+    checkTable(c, name, reports[0])
+    return reports[0]
+
+
+def checkStock(c, name, r):
+    t = r["total"]
+    a = r["analysis"]
+    c.check(a == (t["acceptors"], t["acceptors"] - t["remote"], t["mixed"],
+                  t["allRemote"]),
+            "%s: the stencil's own count (interpolated, local, mixed, "
+            "remote) %s = the report's %s"
+            % (name, a, (t["acceptors"], t["acceptors"] - t["remote"],
+                         t["mixed"], t["allRemote"])))
+
+
+def checkRuns(c, stencil, serial, parallel):
+    nothing = ["remote", "mixed", "allRemote", "remoteSlots", "procFaces",
+               "procPatches", "sent", "received", "sendRanks", "recvRanks"]
+    s = serial["total"]
+    c.check(serial["ranks"] == 1 and all(s[k] == 0 for k in nothing),
+            "%s serial: one row, %s all 0"
+            % (stencil, " ".join(nothing)))
+    p = parallel["total"]
+    faces = [row["procFaces"] for row in parallel["rows"]]
+    c.check(p["cells"] == s["cells"] and p["acceptors"] == s["acceptors"],
+            "%s -np %d: cells %s add up to the serial %d, acceptors %s to "
+            "the serial %d"
+            % (stencil, parallel["ranks"],
+               "+".join(str(row["cells"]) for row in parallel["rows"]),
+               s["cells"],
+               "+".join(str(row["acceptors"]) for row in parallel["rows"]),
+               s["acceptors"]))
+    c.check(p["procFaces"] % 2 == 0
+            and (len(faces) != 2 or faces[0] == faces[1])
+            and p["sent"] == p["received"]
+            and p["sendRanks"] == p["recvRanks"],
+            "%s -np %d: processor faces %s (each seen from both sides), "
+            "cells sent %d = received, messages %d = received"
+            % (stencil, parallel["ranks"], faces, p["sent"],
+               p["sendRanks"]))
+    print("  %s -np %d: remote acceptors %d of %d (mixed %d, all remote %d, "
+          "remote slots %d), share %.4f, cell imbalance %.4f"
+          % (stencil, parallel["ranks"], p["remote"], p["acceptors"],
+             p["mixed"], p["allRemote"], p["remoteSlots"],
+             parallel["remoteShare"], parallel["cellImbalance"]))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[1])
+    ap.add_argument("serial")
+    ap.add_argument("parallel")
+    ap.add_argument("-stencils", nargs="+",
+                    default=[STOCK, "octreeInverseDistance"])
+    a = ap.parse_args()
+    c = checker()
+    reports = {}
+    for stencil in a.stencils:
+        serial = oneReport(c, stencil + " serial",
+                           os.path.join(a.serial, stencil))
+        parallel = oneReport(c, stencil + " parallel",
+                             os.path.join(a.parallel, stencil))
+        if not (serial and parallel):
+            continue
+        checkRuns(c, stencil, serial, parallel)
+        if stencil == STOCK:
+            checkStock(c, stencil + " serial", serial)
+            checkStock(c, stencil + " parallel", parallel)
+        reports[stencil] = parallel
+    if STOCK in reports:
+        for stencil, r in reports.items():
+            if stencil != STOCK:
+                c.check(r["rows"] == reports[STOCK]["rows"],
+                        "%s parallel: every row equals %s's"
+                        % (stencil, STOCK))
+    sys.exit(1 if c.failed else 0)
+
+
+if __name__ == "__main__":
+    main()
