@@ -43,12 +43,16 @@ Description
 
     The motion is the one the solver would compute with no fluid load: for
     eABAMeshMotion set fluidLoad off in its coefficients (the drone cases'
-    Allrun does that with -motionOnly).  The function objects of
+    Allrun does that with -motionOnly).  With -couplings (serial) it also
+    collects the donor-acceptor pairs of every step and, if the check
+    passes, writes them to constant/oversetCouplings (oversetCouplings) for
+    the oversetGraph decomposition method.  The function objects of
     system/controlDict run as in a solver (the drone cases: flight data,
     joints.dat/bodies.dat, step timers), unless -noFunctionObjects.
 
 Usage
-    \b oversetMotionCheck [-maxHoleFraction F] [-noFunctionObjects] [-parallel]
+    \b oversetMotionCheck [-maxHoleFraction F] [-couplings]
+        [-noFunctionObjects] [-parallel]
 
 \*---------------------------------------------------------------------------*/
 
@@ -56,6 +60,7 @@ Usage
 #include "Time.H"
 #include "dynamicFvMesh.H"
 #include "cellCellStencilObject.H"
+#include "oversetCouplings.H"
 
 using namespace Foam;
 
@@ -211,6 +216,12 @@ int main(int argc, char *argv[])
         " (default 0.25)"
     );
 
+    argList::addBoolOption
+    (
+        "couplings",
+        "collect the donor-acceptor pairs of every step into"
+        " constant/oversetCouplings (serial; for method oversetGraph)"
+    );
     #include "setRootCase.H"
     #include "createTime.H"
     #include "createDynamicFvMesh.H"
@@ -223,6 +234,11 @@ int main(int argc, char *argv[])
     const labelList zoneCells(countZoneCells(zoneID, nZones));
     Info<< "Zones (cells): " << zoneCells << nl << endl;
 
+    autoPtr<oversetCouplings> couplings;
+    if (args.found("couplings"))
+    {
+        couplings.reset(new oversetCouplings(mesh));
+    }
     labelList maxHoles(nZones, Zero);
     label nSteps = 0;
     bool failed = false;
@@ -234,6 +250,10 @@ int main(int argc, char *argv[])
         ++nSteps;
 
         const stepCounts counts(mesh, zoneID, nZones);
+        if (couplings)
+        {
+            couplings->addPose(mesh);
+        }
         failed =
             checkStep(runTime, counts, zoneCells, maxHoleFraction, maxHoles);
 
@@ -251,6 +271,10 @@ int main(int argc, char *argv[])
         << maxHoles << " of " << zoneCells << " cells" << nl;
     if (!failed)
     {
+        if (couplings)
+        {
+            couplings->writeCouplings();
+        }
         Info<< "oversetMotionCheck: OK" << nl;
     }
     Info<< nl << "End" << nl << endl;

@@ -1,0 +1,92 @@
+/*---------------------------------------------------------------------------*\
+  flapFoam: free-flight simulation of flapping-wing drones on OpenFOAM v1912
+-------------------------------------------------------------------------------
+    Copyright (C) 2025-2026 flapFoam developers
+-------------------------------------------------------------------------------
+License
+    This file is part of flapFoam, derived from OpenFOAM.
+
+    flapFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by
+    the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    flapFoam is distributed in the hope that it will be useful, but WITHOUT
+    ANY WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License
+    along with flapFoam (COPYING).  If not, see <http://www.gnu.org/licenses/>.
+
+\*---------------------------------------------------------------------------*/
+
+#include "graphPartitioner.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::graphPartitioner::library>
+Foam::graphPartitioner::libraryNames
+({
+    { library::metis, "metis" },
+    { library::scotch, "scotch" },
+});
+
+
+const Foam::wordList Foam::graphPartitioner::keys
+({
+    "partitioner", "imbalance", "oversetImbalance", "oversetWork"
+});
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::graphPartitioner::graphPartitioner(const dictionary& coeffs)
+:
+    library_
+    (
+        libraryNames.getOrDefault("partitioner", coeffs, library::metis)
+    ),
+    imbalance_
+    (
+        coeffs.getCheckOrDefault<scalar>
+        (
+            "imbalance", 0.02, scalarMinMax(1e-3, 1)
+        )
+    ),
+    oversetImbalance_
+    (
+        coeffs.getCheckOrDefault<scalar>
+        (
+            "oversetImbalance", 0.1, scalarMinMax(1e-3, 10)
+        )
+    ),
+    oversetWork_
+    (
+        coeffs.getCheckOrDefault<scalar>
+        (
+            "oversetWork", 1, scalarMinMax(0, 1000)
+        )
+    )
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::labelList Foam::graphPartitioner::partition
+(
+    const couplingGraph& graph,
+    const label nParts
+) const
+{
+    if (nParts == 1 || graph.nCells() == 0)
+    {
+        return labelList(graph.nCells(), Zero);
+    }
+    return library_ == library::metis
+        ? metis(graph, nParts)
+        : scotch(graph, nParts);
+}
+
+
+// ************************************************************************* //

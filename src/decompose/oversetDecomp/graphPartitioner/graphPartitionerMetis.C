@@ -1,0 +1,99 @@
+/*---------------------------------------------------------------------------*\
+  flapFoam: free-flight simulation of flapping-wing drones on OpenFOAM v1912
+-------------------------------------------------------------------------------
+    Copyright (C) 2025-2026 flapFoam developers
+-------------------------------------------------------------------------------
+License
+    This file is part of flapFoam, derived from OpenFOAM.
+
+    flapFoam is free software: you can redistribute it and/or modify it
+    under the terms of the GNU General Public License as published by
+    the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    flapFoam is distributed in the hope that it will be useful, but WITHOUT
+    ANY WARRANTY; without even the implied warranty of MERCHANTABILITY or
+    FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General Public License
+    for more details.
+
+    You should have received a copy of the GNU General Public License
+    along with flapFoam (COPYING).  If not, see <http://www.gnu.org/licenses/>.
+
+Description
+    graphPartitioner::metis: METIS_PartGraphKway, two constraints per
+    vertex (cell weight, overset work), weighted edges.
+
+\*---------------------------------------------------------------------------*/
+
+#include "graphPartitioner.H"
+#include <metis.h>
+#include <vector>
+
+static_assert
+(
+    sizeof(idx_t) == sizeof(Foam::label),
+    "METIS idx_t and OpenFOAM label differ in width"
+);
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::labelList Foam::graphPartitioner::metis
+(
+    const couplingGraph& graph,
+    const label nParts
+) const
+{
+    idx_t nVertices = graph.nCells();
+    const bool withOverset = sum(graph.oversetWork()) > 0;
+    idx_t nConstraints = withOverset ? 2 : 1;
+
+    std::vector<idx_t> vwgt(nConstraints*nVertices);
+    for (idx_t i = 0; i < nVertices; ++i)
+    {
+        vwgt[nConstraints*i] = graph.cellWeight()[i];
+        if (withOverset)
+        {
+            vwgt[nConstraints*i + 1] = graph.oversetWork()[i];
+        }
+    }
+    std::vector<real_t> ubvec{real_t(1 + imbalance_)};
+    if (withOverset)
+    {
+        ubvec.push_back(real_t(1 + oversetImbalance_));
+    }
+    idx_t options[METIS_NOPTIONS];
+    METIS_SetDefaultOptions(options);
+    options[METIS_OPTION_NUMBERING] = 0;
+    options[METIS_OPTION_SEED] = 1;
+
+    idx_t nPartsMetis = nParts;
+    idx_t edgeCut = 0;
+    labelList part(nVertices);
+    const int status = METIS_PartGraphKway
+    (
+        &nVertices,
+        &nConstraints,
+        const_cast<idx_t*>(graph.xadj().cdata()),
+        const_cast<idx_t*>(graph.adjncy().cdata()),
+        vwgt.data(),
+        nullptr,
+        const_cast<idx_t*>(graph.adjwgt().cdata()),
+        &nPartsMetis,
+        nullptr,
+        ubvec.data(),
+        options,
+        &edgeCut,
+        part.data()
+    );
+    if (status != METIS_OK)
+    {
+        FatalErrorInFunction
+            << "METIS_PartGraphKway failed (status " << status << ") on "
+            << nVertices << " cells into " << nParts << " parts"
+            << exit(FatalError);
+    }
+    return part;
+}
+
+
+// ************************************************************************* //
