@@ -30,17 +30,17 @@ def _int(fname, key, word):
 
 
 def read_rank(fname):
-    """One rank's file: {"rank", "nRanks", "destinations" (distinct over
-    all point-to-point functions), "functions": {name: {"kind", "calls",
-    "bytes", "destinations" (None for a collective)}}}."""
-    counts = {"functions": {}}
+    """One rank's file: {"rank", "nRanks", "functions": {name: {"kind",
+    "calls", "bytes", "destinations" (None for a collective)}}, "to":
+    {destination rank: {"calls", "bytes"}} (point-to-point, all functions
+    together)}."""
+    counts = {"functions": {}, "to": {}}
     with open(fname) as f:
         for line in f:
             words = line.split()
             if not words or words[0].startswith("#"):
                 continue
-            if len(words) == 2 and words[0] in ("rank", "nRanks",
-                                                "destinations"):
+            if len(words) == 2 and words[0] in ("rank", "nRanks"):
                 counts[words[0]] = _int(fname, words[0], words[1])
             elif len(words) == 5 and words[1] in KINDS:
                 name, kind, calls, nbytes, dests = words
@@ -50,12 +50,17 @@ def read_rank(fname):
                     "bytes": _int(fname, name, nbytes),
                     "destinations":
                         None if dests == "-" else _int(fname, name, dests)}
+            elif len(words) == 4 and words[0] == "to":
+                key = "to " + words[1]
+                counts["to"][_int(fname, key, words[1])] = {
+                    "calls": _int(fname, key, words[2]),
+                    "bytes": _int(fname, key, words[3])}
             else:
                 raise ValueError(
                     "%s: unknown line '%s' (allowed: 'rank N', 'nRanks N', "
-                    "'destinations N', 'MPI_name p2p|collective calls bytes "
-                    "destinations|-')" % (fname, line.strip()))
-    for key in ("rank", "nRanks", "destinations"):
+                    "'MPI_name p2p|collective calls bytes destinations|-', "
+                    "'to rank calls bytes')" % (fname, line.strip()))
+    for key in ("rank", "nRanks"):
         if key not in counts:
             raise ValueError("%s: no '%s' line" % (fname, key))
     return counts
@@ -86,13 +91,13 @@ def read_counts(directory):
 
 def totals(counts):
     """One rank's totals: calls and bytes of the point-to-point functions
-    and of the collectives, and its distinct destinations."""
+    and of the collectives, and the number of ranks it sent to."""
     t = dict.fromkeys(TOTALS, 0)
     for f in counts["functions"].values():
         prefix = "p2p" if f["kind"] == "p2p" else "collective"
         t[prefix + "Calls"] += f["calls"]
         t[prefix + "Bytes"] += f["bytes"]
-    t["destinations"] = counts["destinations"]
+    t["destinations"] = sum(1 for d in counts["to"].values() if d["calls"])
     return t
 
 
@@ -101,21 +106,30 @@ def rank_totals(directory):
     return [totals(c) for c in read_counts(directory)]
 
 
+def _minus(later, earlier, keys):
+    """Dict of dicts: later minus earlier, key by key (absent: 0)."""
+    zero = dict.fromkeys(keys, 0)
+    return {name: dict(v, **{k: v[k] - earlier.get(name, zero)[k]
+                             for k in keys})
+            for name, v in later.items()}
+
+
 def difference(later, earlier):
-    """Counts of one rank of a longer run minus those of a shorter one
-    (calls and bytes; the destinations are the longer run's)."""
-    functions = {}
-    for name, f in later["functions"].items():
-        e = earlier["functions"].get(name, {"calls": 0, "bytes": 0})
-        functions[name] = dict(f, calls=f["calls"] - e["calls"],
-                               bytes=f["bytes"] - e["bytes"])
-    return dict(later, functions=functions)
+    """Counts of one rank of a longer run minus those of a shorter one:
+    calls and bytes per function and per destination (whose calls then
+    give the destinations of the extra steps; the per-function
+    "destinations" stay the longer run's)."""
+    return dict(later,
+                functions=_minus(later["functions"], earlier["functions"],
+                                 ("calls", "bytes")),
+                to=_minus(later["to"], earlier["to"], ("calls", "bytes")))
 
 
 def per_step(dir1, n1, dir2, n2):
     """Per-rank totals per step: (run of n2 steps - run of n1 steps) /
     (n2 - n1), which leaves out the start-up and the end of a run.  Values
-    are floats; a whole number where the steps' traffic is the same."""
+    are floats, whole where the steps' traffic is the same; "destinations"
+    is the number of ranks sent to in the extra steps (not divided)."""
     if n2 <= n1:
         raise ValueError("per_step: N2 (%s) must be larger than N1 (%s)"
                          % (n2, n1))

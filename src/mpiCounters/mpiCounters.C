@@ -74,17 +74,21 @@ int Foam::mpiCounters::worldRank(int dest, MPI_Comm comm)
 
 int Foam::mpiCounters::nDestinations(function f) const
 {
-    const int first = (f == nFunctions ? 0 : f);
-    const int last = (f == nFunctions ? firstCollective : f + 1);
     int n = 0;
-    for (int r = 0; r < nWorld_; ++r)
+    for (int w = 0; w < nWorld_; ++w)
     {
-        bool to = false;
-        for (int g = first; g < last; ++g)
-        {
-            to = to || sentTo_[g*nWorld_ + r];
-        }
-        n += to;
+        n += callsTo_[f*nWorld_ + w] > 0;
+    }
+    return n;
+}
+
+
+std::int64_t Foam::mpiCounters::callsTo(int w) const
+{
+    std::int64_t n = 0;
+    for (int f = 0; f < firstCollective; ++f)
+    {
+        n += callsTo_[f*nWorld_ + w];
     }
     return n;
 }
@@ -99,7 +103,6 @@ std::string Foam::mpiCounters::text(int rank) const
         << " contribution\n"
         << "rank " << rank << '\n'
         << "nRanks " << size(MPI_COMM_WORLD) << '\n'
-        << "destinations " << nDestinations(nFunctions) << '\n'
         << "# function kind calls bytes destinations\n";
 
     for (int f = 0; f < nFunctions; ++f)
@@ -116,6 +119,16 @@ std::string Foam::mpiCounters::text(int rank) const
             os  << "-\n";
         }
     }
+
+    os  << "# to rank calls bytes\n";
+    for (int w = 0; w < nWorld_; ++w)
+    {
+        if (callsTo(w))
+        {
+            os  << "to " << w << ' ' << callsTo(w) << ' ' << bytesTo_[w]
+                << '\n';
+        }
+    }
     return os.str();
 }
 
@@ -126,7 +139,8 @@ Foam::mpiCounters::mpiCounters()
 :
     calls_(nFunctions, 0),
     bytes_(nFunctions, 0),
-    sentTo_(),
+    callsTo_(),
+    bytesTo_(),
     nWorld_(0)
 {}
 
@@ -196,17 +210,20 @@ void Foam::mpiCounters::send
     {
         return;
     }
-    bytes_[f] += bytes(count, type);
+    const std::int64_t n = bytes(count, type);
+    bytes_[f] += n;
 
     if (!nWorld_)
     {
         nWorld_ = size(MPI_COMM_WORLD);
-        sentTo_.assign(firstCollective*nWorld_, 0);
+        callsTo_.assign(firstCollective*nWorld_, 0);
+        bytesTo_.assign(nWorld_, 0);
     }
     const int w = worldRank(dest, comm);
     if (w >= 0 && w < nWorld_)
     {
-        sentTo_[f*nWorld_ + w] = 1;
+        ++callsTo_[f*nWorld_ + w];
+        bytesTo_[w] += n;
     }
 }
 

@@ -8,13 +8,14 @@ PASS/FAIL line each; exit status non-zero if one fails.
     checkCounts.py probe DIR          the probe's counts, exactly
     checkCounts.py nonZero DIR NAME   both ranks sent point-to-point bytes and
                                       called collectives
-    checkCounts.py steps FACES DIR:N DIR:N DIR:N
+    checkCounts.py steps FACES DESTS DIR:N DIR:N [DIR:N ...]
                                       the same traffic in every step: per-step
                                       counts (difference of the runs of N
-                                      steps) equal between the pairs of runs
-                                      and between the ranks, whole, and the
-                                      point-to-point bytes a multiple of
-                                      FACES doubles (the processor faces)
+                                      steps) equal between consecutive pairs
+                                      of runs and between the ranks, whole,
+                                      DESTS ranks sent to, and point-to-point
+                                      bytes a multiple of FACES doubles (the
+                                      processor faces of a rank)
 """
 
 import sys
@@ -45,6 +46,10 @@ PROBE = [
      "MPI_Gatherv": (1, 2*8, None),
      "MPI_Barrier": (1, 0, None)},
 ]
+# And rank -> destination -> (calls, bytes), all point-to-point sends
+# (Send, Bsend, Isend, Sendrecv; Isend, Ssend, Sendrecv)
+PROBE_TO = [{1: (3 + 1 + 1 + 1, 3*1000*8 + 100 + 10*4 + 7*4)},
+            {0: (3 + 1 + 1, 3*5*4 + 2*4 + 7*4)}]
 
 
 def probe(check, directory):
@@ -55,9 +60,10 @@ def probe(check, directory):
                for name, f in counts["functions"].items() if f["calls"]}
         check(got == expected, "probe rank %d: calls, bytes, destinations "
               "of every MPI function as sent: %s" % (r, sorted(got.items())))
-        check(counts["destinations"] == 1, "probe rank %d: 1 destination "
-              "over all point-to-point sends (%d)"
-              % (r, counts["destinations"]))
+        to = {d: (t["calls"], t["bytes"]) for d, t in counts["to"].items()}
+        check(to == PROBE_TO[r], "probe rank %d: destination: (calls, bytes)"
+              " of all point-to-point sends (none to MPI_PROC_NULL) as sent:"
+              " %s" % (r, to))
 
 
 def non_zero(check, directory, name):
@@ -66,22 +72,30 @@ def non_zero(check, directory, name):
               "%s rank %d: counts written, non-zero: %s" % (name, r, t))
 
 
-def steps(check, faces, runs):
-    (d1, n1), (d2, n2), (d3, n3) = [(r.rsplit(":", 1)[0],
-                                     int(r.rsplit(":", 1)[1])) for r in runs]
-    first = mpiCounts.per_step(d1, n1, d2, n2)
-    second = mpiCounts.per_step(d2, n2, d3, n3)
-    check(first == second, "per step, steps %d-%d = steps %d-%d: %s"
-          % (n1, n2, n2, n3, first))
+def steps(check, faces, dests, runs):
+    runs = [(r.rsplit(":", 1)[0], int(r.rsplit(":", 1)[1])) for r in runs]
+    pairs = list(zip(runs, runs[1:]))
+    first = mpiCounts.per_step(*pairs[0][0], *pairs[0][1])
+    n = len(first)
+    for (d1, n1), (d2, n2) in pairs[1:]:
+        check(mpiCounts.per_step(d1, n1, d2, n2) == first,
+              "%d ranks: per step, steps %d-%d = steps %d-%d"
+              % (n, pairs[0][0][1], pairs[0][1][1], n1, n2))
     check(all(first[0] == t for t in first),
-          "per step: the same on every rank (symmetric halves)")
+          "%d ranks: per step the same on every rank (symmetric): %s"
+          % (n, first[0]))
     check(all(float(v).is_integer() for t in first for v in t.values()),
-          "per step: whole calls and bytes")
+          "%d ranks: per step whole calls and bytes" % n)
+    check(all(t["destinations"] == dests for t in first),
+          "%d ranks: per step %d ranks sent to (the neighbours; over the "
+          "whole run: %s)" % (n, dests, [t["destinations"] for t in
+                                         mpiCounts.rank_totals(runs[0][0])]))
     halo = 8*faces
     check(all(t["p2pBytes"] > 0 and t["p2pBytes"] % halo == 0
               for t in first),
-          "per step: point-to-point bytes %d = %g x %d processor faces x 8"
-          % (first[0]["p2pBytes"], first[0]["p2pBytes"]/halo, faces))
+          "%d ranks: per step point-to-point bytes %d = %g x %d processor "
+          "faces x 8" % (n, first[0]["p2pBytes"], first[0]["p2pBytes"]/halo,
+                         faces))
 
 
 def main(argv):
@@ -91,8 +105,8 @@ def main(argv):
             probe(check, argv[1])
         elif argv[:1] == ["nonZero"] and len(argv) == 3:
             non_zero(check, argv[1], argv[2])
-        elif argv[:1] == ["steps"] and len(argv) == 5:
-            steps(check, int(argv[1]), argv[2:])
+        elif argv[:1] == ["steps"] and len(argv) >= 5:
+            steps(check, int(argv[1]), int(argv[2]), argv[3:])
         else:
             sys.exit(__doc__)
     except ValueError as err:
