@@ -12,6 +12,8 @@ says so).  Only the plot modules import matplotlib.
     wang            Wang kinematics of imposedMotion entries
     flightData      HDF5 flight data: find, load, check, compare
     stepTimers      stepTimers.dat: read, join, summarise
+    mpiCounts       MPI counts per rank (libflapFoamMPICounters.so): read,
+                    totals, per-step difference of two runs
     foamMesh        polyMesh and volScalarField reader
     wingGeometry    the semi-elliptical wing (docs/paper.md, Table 1)
     blockMesh       blockMeshDict writer, 1-D cell distributions
