@@ -137,7 +137,11 @@ void fromRank1(int rank, MPI_Comm reversed)
     MPI_Recv(&f[0], 5, MPI_FLOAT, 1, 5, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
     MPI_Recv(&f[5], 5, MPI_FLOAT, 1, 6, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
     MPI_Recv(&f[10], 5, MPI_FLOAT, 0, 7, reversed, MPI_STATUS_IGNORE);
-    check(std::accumulate(f.begin(), f.end(), 0.0f) == 30, "floats (MPI_Isend)");
+    check
+    (
+        std::accumulate(f.begin(), f.end(), 0.0f) == 30,
+        "floats (MPI_Isend)"
+    );
     i.assign(2, 0);
     MPI_Recv(i.data(), 2, MPI_INT, 1, 8, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
     check(i[1] == 3, "ints (MPI_Ssend)");
