@@ -49,29 +49,42 @@ Foam::graphPartitioner::graphPartitioner(const dictionary& coeffs)
     ),
     imbalance_
     (
-        coeffs.getCheckOrDefault<scalar>
-        (
-            "imbalance", 0.02, scalarMinMax(1e-3, 1)
-        )
+        readInRange(coeffs, "imbalance", 0.02, scalarMinMax(1e-3, 1))
     ),
     oversetImbalance_
     (
-        coeffs.getCheckOrDefault<scalar>
+        readInRange
         (
-            "oversetImbalance", 0.1, scalarMinMax(1e-3, 10)
+            coeffs, "oversetImbalance", 0.1, scalarMinMax(1e-3, 10)
         )
     ),
     oversetWork_
     (
-        coeffs.getCheckOrDefault<scalar>
-        (
-            "oversetWork", 1, scalarMinMax(0, 1000)
-        )
+        readInRange(coeffs, "oversetWork", 1, scalarMinMax(0, 1000))
     )
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::graphPartitioner::readInRange
+(
+    const dictionary& dict,
+    const word& key,
+    const scalar deflt,
+    const scalarMinMax& range
+)
+{
+    const scalar value = dict.getOrDefault<scalar>(key, deflt);
+    if (!range.contains(value))
+    {
+        FatalIOErrorInFunction(dict)
+            << key << " " << value << ": a value in [" << range.min()
+            << ", " << range.max() << "] is allowed" << exit(FatalIOError);
+    }
+    return value;
+}
+
 
 Foam::labelList Foam::graphPartitioner::partition
 (

@@ -62,13 +62,23 @@ Foam::labelList Foam::graphPartitioner::scotch
         );
     }
 
-    SCOTCH_randomSeed(1);       // the same partition in every run
-    SCOTCH_randomReset();
+    // Deterministic: a context of its own, one random seed, no
+    // thread-order effects
+    SCOTCH_Context context;
     SCOTCH_Graph scotchGraph;
+    SCOTCH_Graph boundGraph;
     SCOTCH_Strat strategy;
+    SCOTCH_contextInit(&context);
     SCOTCH_graphInit(&scotchGraph);
+    SCOTCH_graphInit(&boundGraph);
     SCOTCH_stratInit(&strategy);
-    int status = SCOTCH_graphBuild
+    int status = SCOTCH_contextOptionSetNum
+    (
+        &context, SCOTCH_OPTIONNUMDETERMINISTIC, 1
+    );
+    status = status ? status : SCOTCH_contextRandomClone(&context);
+    SCOTCH_contextRandomSeed(&context, 1);
+    status = status ? status : SCOTCH_graphBuild
     (
         &scotchGraph,
         0,
@@ -86,13 +96,19 @@ Foam::labelList Foam::graphPartitioner::scotch
     (
         &strategy, SCOTCH_STRATBALANCE, nParts, imbalance_
     );
+    status = status ? status : SCOTCH_contextBindGraph
+    (
+        &context, &scotchGraph, &boundGraph
+    );
     labelList part(n);
     status = status ? status : SCOTCH_graphPart
     (
-        &scotchGraph, nParts, &strategy, part.data()
+        &boundGraph, nParts, &strategy, part.data()
     );
+    SCOTCH_graphExit(&boundGraph);
     SCOTCH_stratExit(&strategy);
     SCOTCH_graphExit(&scotchGraph);
+    SCOTCH_contextExit(&context);
     if (status)
     {
         FatalErrorInFunction

@@ -109,9 +109,9 @@ Foam::oversetGraphDecomp::oversetGraphDecomp
     ),
     couplingWeight_
     (
-        coeffs_.getCheckOrDefault<scalar>
+        graphPartitioner::readInRange
         (
-            "couplingWeight", 1, scalarMinMax(0, 1000)
+            coeffs_, "couplingWeight", 1, scalarMinMax(0, 1000)
         )
     ),
     partitioner_(coeffs_)
