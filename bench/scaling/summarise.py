@@ -1,0 +1,241 @@
+#!/usr/bin/python3
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
+"""Table, model and charts of the scaling bench (bench/scaling/run).
+
+    bench/scaling/summarise.py -dir DIR -levels "fine ..." -countLevel L
+        -countSteps N1 N2 -timeLevel L [-startup K] [-o PREFIX]
+
+Reads what run left in DIR: the counted structure of every level
+(DIR/<level>/structure/<method>-np<N>.report, .cellDecomposition), the
+counted traffic of the count level (DIR/<L>/traffic/<run>-s<N>/counts, the
+oversetRankReport of its log, its peak memory), the timed runs
+(DIR/<level>/timed/<run>-r<R>/postProcessing/stepTimers) and
+DIR/pingPong.log; fits the model's costs (flapfoam.scalingModel) and writes
+PREFIX.md (tables: structure, traffic, timed against the model, the
+model's step per level, method, ranks and stencil, the goals of issue 11
+part 3) and the charts PREFIX-*.png (charts.py).
+"""
+
+import argparse
+import glob
+import os
+import platform
+import re
+import sys
+import time
+
+import numpy as np
+
+sys.path.insert(0, os.environ.get("FLAPFOAM_PROJECT_DIR", os.path.join(
+    os.path.dirname(os.path.abspath(__file__)), "../..")) + "/scripts")
+from flapfoam import mpiCounts, rankTables, scalingModel, stepTimers  # noqa
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import charts  # noqa: E402
+import report  # noqa: E402
+
+METHODS = ["simple", "hierarchical", "scotch", "metis", "oversetGraph"]
+STENCILS = ["inverseDistance", "octreeInverseDistance"]
+REPORT = "oversetCouplingsReport"
+
+
+def read_structure(folder, base):
+    """{(method, P): Decomposition} of a level's structure folder."""
+    mesh = None
+    out = {}
+    for report in sorted(glob.glob(os.path.join(folder, "*-np*.report"))):
+        m = re.match(r"(\w+)-np(\d+)\.report$", os.path.basename(report))
+        table = rankTables.read_table(report, REPORT)
+        decomp = rankTables.read_decomposition(
+            report[:-len(".report")] + ".cellDecomposition")
+        if mesh is None:
+            mesh = os.path.join(base, "constant", "polyMesh")
+        nbr = rankTables.neighbour_ranks(mesh, decomp)
+        out[(m.group(1), int(m.group(2)))] = \
+            scalingModel.Decomposition(table, nbr)
+    return out
+
+
+def read_traffic(folder, n1, n2):
+    """{(method, P, stencil): dict perStep (per rank: p2pBytes, p2pCalls,
+    collectiveCalls), report (oversetRankReport table of the first
+    update), memory (MiB, summed over the ranks)}; and the solver runs
+    under the key ("solver", 2, stencil)."""
+    out = {}
+    for d in sorted(glob.glob(os.path.join(folder, "*-s%d" % n2))):
+        m = re.match(r"(\w+)-np(\d+)-(\w+)-s%d$" % n2, os.path.basename(d))
+        short = d[:-len("-s%d" % n2)] + "-s%d" % n1
+        if not m or not os.path.isdir(os.path.join(short, "counts")):
+            continue
+        entry = {"perStep": mpiCounts.per_step(
+            os.path.join(short, "counts"), n1, os.path.join(d, "counts"), n2)}
+        log = os.path.join(d, "log.oversetMotionCheck")
+        if os.path.isfile(log):
+            entry["report"] = rankTables.read_table(log, "oversetRankReport")
+        with open(os.path.join(d, "memory")) as f:
+            entry["memory"] = float(f.read().split()[0])
+        out[(m.group(1), int(m.group(2)), m.group(3))] = entry
+    return out
+
+
+def read_timed(folder, startup):
+    """{(method, P, stencil): {part: median over rounds of the per-run
+    medians}} of a level's timed runs; method "serial" for P = 1; parts:
+    rbd + overset + pimple (total less the rest of the step: writing the
+    fields, which the model leaves out)."""
+    groups = {}
+    for d in sorted(glob.glob(os.path.join(folder, "*-r*"))):
+        m = re.match(r"(\w+)-np(\d+)-(\w+)-r\d+$", os.path.basename(d))
+        if not m or not os.path.isdir(os.path.join(d, "postProcessing")):
+            continue
+        columns, data = stepTimers.read_input(
+            os.path.join(d, "postProcessing", "stepTimers"), startup)
+        med = {c: float(np.median(data[:, i])) for i, c in enumerate(columns)}
+        parts = sum(data[:, columns.index(c)]
+                    for c in ("rbd", "overset", "pimple"))
+        med["parts"] = float(np.median(parts))
+        groups.setdefault((m.group(1), int(m.group(2)), m.group(3)),
+                          []).append(med)
+    return {k: dict({c: float(np.median([r[c] for r in g]))
+                     for c in ("rbd", "overset", "pimple", "total", "parts")},
+                    rounds=len(g))
+            for k, g in groups.items()}
+
+
+def read_ping_pong(fname):
+    """(alpha, beta) of pingPong's last line."""
+    with open(fname) as f:
+        for line in f:
+            w = line.split()
+            if len(w) == 5 and w[1] == "alpha":
+                return float(w[2]), float(w[4])
+    raise ValueError("%s: no 'pingPong: alpha A beta B' line" % fname)
+
+
+def pimple_traffic(traffic, structure):
+    """(sMsg, sBytes, sReduce): the flow run minus the motion run (octree,
+    hierarchical, 2 ranks), per step of rank 0."""
+    stencil = "octreeInverseDistance"
+    flow = traffic[("solver", 2, stencil)]["perStep"][0]
+    motion = traffic[("hierarchical", 2, stencil)]["perStep"][0]
+    d = structure[("hierarchical", 2)]
+    return ((flow["p2pCalls"] - motion["p2pCalls"])/d.neighbours[0],
+            (flow["p2pBytes"] - motion["p2pBytes"])/(8*d.faces[0]),
+            flow["collectiveCalls"] - motion["collectiveCalls"])
+
+
+def traffic_fit(traffic, structure, stencil):
+    """The stencil's TrafficFit from the counted runs (every rank)."""
+    rows = []
+    for (method, p, s), e in traffic.items():
+        if s != stencil or method == "solver" or (method, p) not in structure:
+            continue
+        d = structure[(method, p)]
+        for r, step in enumerate(e["perStep"]):
+            rows.append((p, d.pairs[r], step["p2pBytes"], step["p2pCalls"]))
+    return scalingModel.TrafficFit(rows)
+
+
+def serial_of(structure):
+    """The serial decomposition of a level (cells, overset work, pairs
+    from any of its reports' totals)."""
+    d = next(iter(structure.values()))
+    return scalingModel.serial_decomposition(
+        d.cells.sum(), d.work.sum(), d.allPairs.sum())
+
+
+def fit_costs(data, stencil, level):
+    """The stencil's Costs for LEVEL: cFix, cWork fitted to the time
+    level's serial and 2-rank runs, cCell and rbd of its serial run; where
+    LEVEL has a serial run of its own, cCell, rbd and cWork (cFix kept)
+    from that run."""
+    costs = scalingModel.Costs(data["machine"], data["pimpleTraffic"],
+                               data["fits"][stencil])
+    tl = data["timeLevel"]
+    timed, structure = data["timed"][tl], data["structure"][tl]
+    serial, s1 = serial_of(structure), timed[("serial", 1, stencil)]
+    runs = [(s1["overset"], serial.work[0], 0.0)]
+    for (method, p, s), t in timed.items():
+        if s == stencil and p > 1 and (method, p) in structure:
+            d = structure[(method, p)]
+            comm = scalingModel.stencil_comm(costs, d)
+            runs.append((t["overset"], d.work.max(), comm.max()))
+    costs.fit_overset(runs)
+    costs.cCell, costs.rbd = s1["pimple"]/serial.cells[0], s1["rbd"]
+    own = data["timed"].get(level, {}).get(("serial", 1, stencil))
+    if own and level != tl:
+        d = serial_of(data["structure"][level])
+        costs.fit_serial(own, d.cells[0], d.work[0])
+    return costs
+
+
+def predictions(data):
+    """{(level, method, P, stencil): step} of the model, P = 1 (method
+    'serial') and every counted decomposition."""
+    out = {}
+    for level, structure in data["structure"].items():
+        for stencil in data["stencils"]:
+            costs = fit_costs(data, stencil, level)
+            data["costs"][(level, stencil)] = costs
+            out[(level, "serial", 1, stencil)] = scalingModel.predict(
+                costs, serial_of(structure))
+            for (method, p), d in structure.items():
+                out[(level, method, p, stencil)] = \
+                    scalingModel.predict(costs, d)
+    return out
+
+
+def load(args):
+    """Everything the tables and charts need."""
+    data = {"timeLevel": args.timeLevel, "costs": {}}
+    levels = sorted(set(args.levels.split()) | {args.countLevel,
+                                                args.timeLevel})
+    data["structure"] = {
+        lv: read_structure(os.path.join(args.dir, lv, "structure"),
+                           os.path.join(args.dir, lv, "base"))
+        for lv in levels
+        if glob.glob(os.path.join(args.dir, lv, "structure", "*.report"))}
+    data["traffic"] = read_traffic(
+        os.path.join(args.dir, args.countLevel, "traffic"), *args.countSteps)
+    data["timed"] = {lv: read_timed(os.path.join(args.dir, lv, "timed"),
+                                    args.startup) for lv in levels}
+    data["machine"] = read_ping_pong(os.path.join(args.dir, "pingPong.log"))
+    count = data["structure"][args.countLevel]
+    data["pimpleTraffic"] = pimple_traffic(data["traffic"], count)
+    data["stencils"] = [s for s in STENCILS
+                        if any(k[2] == s for k in data["traffic"])]
+    data["fits"] = {s: traffic_fit(data["traffic"], count, s)
+                    for s in data["stencils"]}
+    data["model"] = predictions(data)
+    data["levels"] = [lv for lv in args.levels.split()
+                      if lv in data["structure"]]
+    data["countLevel"] = args.countLevel
+    return data
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("-dir", required=True)
+    parser.add_argument("-levels", default="fine")
+    parser.add_argument("-countLevel", default="tiny")
+    parser.add_argument("-countSteps", nargs=2, type=int, default=[1, 3])
+    parser.add_argument("-timeLevel", default="coarse")
+    parser.add_argument("-startup", type=int, default=3)
+    parser.add_argument("-o", default=os.path.join(
+        os.path.dirname(os.path.abspath(__file__)), "results"))
+    args = parser.parse_args()
+    data = load(args)
+    lines = report.tables(data)
+    lines += ["", "Machine: %s, %d CPUs, load average %s; %s." % (
+        platform.node(), os.cpu_count(),
+        " ".join("%.2f" % x for x in os.getloadavg()),
+        time.strftime("%Y-%m-%d %H:%M"))]
+    with open(args.o + ".md", "w") as f:
+        f.write("\n".join(lines) + "\n")
+    charts.write_all(data, args.o)
+    print("summarise: wrote %s.md and %s-*.png" % (args.o, args.o))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,161 @@
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
+"""
+A model of one time step of the drone cases per rank, from what a
+decomposition gives each rank (counted: rankTables, mpiCounts) and costs
+measured on one machine (bench/scaling).  A model, not a measurement:
+
+    step = rbd + max_r overset_r + max_r pimple_r
+
+(timedOversetFvMesh waits for the slowest rank after the mesh update, so
+the two parts are synchronised separately; rbd is serial, the same on
+every rank), with, per rank r of P,
+
+    overset_r = cFix + cWork W_r + alpha m_r + beta b_r
+    pimple_r  = cCell N_r + alpha sMsg k_r + beta sBytes 8 F_r
+                + alpha sReduce 2 ceil(log2 P)
+
+- N_r cells, F_r processor faces, k_r neighbour ranks, W_r overset work
+  (fringe, donors, hole-cut candidates: couplingReport's oversetWork, a
+  mean over the poses of a cycle);
+- m_r, b_r: the messages and bytes that the stencil sends per step
+  (motion and stencil only), from the traffic fit (TrafficFit: counted at
+  some (method, P) on one level, fitted against P - 1 and the rank's
+  remote donor-acceptor pairs);
+- sMsg, sBytes, sReduce: halo exchanges per neighbour, sweeps by bytes
+  and reductions of one PIMPLE step (counted: a flow run minus a motion
+  run, 2 ranks);
+- cCell: pimple seconds per cell of a serial run; cFix, cWork: the
+  overset part of serial and 2-rank runs fitted to cFix + cWork max_r W_r
+  (+ the modelled communication); the stock stencil's cFix is its
+  per-rank voxel maps of the whole search box, which do not shrink with
+  P; alpha, beta: one message and one byte between two ranks (ping-pong).
+
+Assumptions: the work of a rank is proportional to its cells and its
+overset work; halo traffic per step does not depend on the level (the
+same solver settings); one message costs alpha + bytes beta whatever the
+ranks (no contention: a lower bound on a network); no I/O.
+"""
+
+import math
+
+import numpy as np
+
+
+def least_squares(rows, values):
+    """Coefficients of values ~ rows @ c (least squares)."""
+    c, *_ = np.linalg.lstsq(np.asarray(rows, float),
+                            np.asarray(values, float), rcond=None)
+    return c
+
+
+class TrafficFit:
+    """Per-rank bytes and messages that a stencil sends per step:
+    value = c0 + c1 (P - 1) + c2 remotePairs_r, fitted to counted rows
+    (P, remotePairs_r, bytes, messages)."""
+
+    def __init__(self, rows):
+        if len(rows) < 3:
+            raise ValueError("TrafficFit: %d counted rows, need 3"
+                             % len(rows))
+        x = [self.features(p, pairs) for p, pairs, _b, _m in rows]
+        self.bytes = least_squares(x, [r[2] for r in rows])
+        self.messages = least_squares(x, [r[3] for r in rows])
+        fit = np.array([self.predict(p, pairs) for p, pairs, _b, _m in rows])
+        measured = np.array([[r[2], r[3]] for r in rows])
+        scale = np.maximum(measured.max(axis=0), 1)
+        self.error = np.abs(fit - measured).max(axis=0)/scale
+
+    @staticmethod
+    def features(p, pairs):
+        return [1.0, p - 1.0, pairs]
+
+    def predict(self, p, pairs):
+        """(bytes, messages) per step of a rank of P with PAIRS remote
+        pairs (never negative)."""
+        x = np.array(self.features(p, pairs))
+        return max(x @ self.bytes, 0.0), max(x @ self.messages, 0.0)
+
+
+class Costs:
+    """The measured costs of one stencil (seconds): cCell, cFix, cWork,
+    rbd, and the machine's alpha, beta; the PIMPLE traffic per step
+    (sMsg, sBytes, sReduce) and the stencil's TrafficFit."""
+
+    def __init__(self, machine, pimple_traffic, traffic):
+        self.alpha, self.beta = machine
+        self.sMsg, self.sBytes, self.sReduce = pimple_traffic
+        self.traffic = traffic
+        self.cCell = self.cFix = self.cWork = self.rbd = 0.0
+
+    def fit_serial(self, serial, n_cells, work):
+        """cCell, rbd and (with cFix kept) cWork from a serial run's
+        medians (dict rbd, overset, pimple) of a mesh of n_cells cells
+        and total overset work."""
+        self.cCell = serial["pimple"]/n_cells
+        self.rbd = serial["rbd"]
+        self.cWork = max(serial["overset"] - self.cFix, 0.0)/work
+
+    def fit_overset(self, runs):
+        """cFix, cWork from runs [(overset seconds, max_r W_r, modelled
+        communication seconds)] (serial and parallel)."""
+        a = least_squares([[1.0, w] for _t, w, _c in runs],
+                          [t - c for t, _w, c in runs])
+        self.cFix, self.cWork = max(a[0], 0.0), max(a[1], 0.0)
+
+
+class Decomposition:
+    """What a decomposition gives each rank (arrays, index = rank): cells,
+    processorFaces, neighbours, oversetWork, remotePairs."""
+
+    def __init__(self, table, neighbours):
+        self.ranks = len(table["rows"])
+        col = {c: np.array([r[c] for r in table["rows"]])
+               for c in table["columns"]}
+        self.cells = col["cells"]
+        self.faces = col["processorFaces"]
+        self.work = col["oversetWork"]
+        self.pairs = col["remotePairs"]
+        self.acceptors = col["acceptors"]
+        self.allPairs = col["pairs"]
+        self.neighbours = np.asarray(neighbours, float)
+        self.info = table["info"]
+
+
+def stencil_comm(costs, d):
+    """Per rank: seconds of the stencil's messages per step."""
+    out = []
+    for pairs in d.pairs:
+        b, m = costs.traffic.predict(d.ranks, pairs) if d.ranks > 1 \
+            else (0.0, 0.0)
+        out.append(costs.alpha*m + costs.beta*b)
+    return np.array(out)
+
+
+def predict(costs, d):
+    """The model's step of decomposition d: dict rbd, overset, pimple,
+    total (seconds) and oversetComm, pimpleComm (of the slowest rank)."""
+    comm = stencil_comm(costs, d)
+    overset = costs.cFix + costs.cWork*d.work + comm
+    reduce = 2*math.ceil(math.log2(d.ranks)) if d.ranks > 1 else 0
+    halo = costs.alpha*(costs.sMsg*d.neighbours + costs.sReduce*reduce) \
+        + costs.beta*costs.sBytes*8*d.faces
+    pimple = costs.cCell*d.cells + halo
+    o, p = int(np.argmax(overset)), int(np.argmax(pimple))
+    step = {"rbd": costs.rbd, "overset": float(overset[o]),
+            "pimple": float(pimple[p]), "oversetComm": float(comm[o]),
+            "pimpleComm": float(halo[p])}
+    step["total"] = step["rbd"] + step["overset"] + step["pimple"]
+    return step
+
+
+def serial_decomposition(n_cells, work, pairs):
+    """The one-rank 'decomposition' of a mesh (for the serial step)."""
+    table = {"columns": ["cells", "processorFaces", "oversetWork",
+                         "remotePairs", "acceptors", "pairs"],
+             "rows": [{"cells": n_cells, "processorFaces": 0,
+                       "oversetWork": work, "remotePairs": 0,
+                       "acceptors": 0, "pairs": pairs}],
+             "info": {}}
+    return Decomposition(table, [0])
