@@ -100,13 +100,14 @@ Foam::zoneDonorSearch::zoneDonorSearch
     }
     c_ = c0_;
 
+    // Build the cached search structures now, in the reference frame.
+    // tetBasePtIs synchronises over the processor patches: every rank
+    // calls it, also one that holds no cell of the zone
+    (void)mesh_.tetBasePtIs();
     if (mesh_.nCells() && pts.size())
     {
         bb_ = treeBoundBox(pts);
         bb_.inflate(1e-6);
-
-        // Build the cached search structures now, in the reference frame
-        (void)mesh_.tetBasePtIs();
         (void)mesh_.cellTree();
         (void)mesh_.cellCells();
         (void)mesh_.faceAreas();
