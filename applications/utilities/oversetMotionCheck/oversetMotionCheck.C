@@ -46,12 +46,13 @@ Description
     Allrun does that with -motionOnly).  With -couplings (serial) it also
     collects the donor-acceptor pairs of every step and, if the check
     passes, writes them to constant/oversetCouplings (oversetCouplings) for
-    the oversetGraph decomposition method.  The function objects of
+    the oversetGraph decomposition method; every K-th step's stencil
+    (-sampleEvery, default 10) is kept whole there.  The function objects of
     system/controlDict run as in a solver (the drone cases: flight data,
     joints.dat/bodies.dat, step timers), unless -noFunctionObjects.
 
 Usage
-    \b oversetMotionCheck [-maxHoleFraction F] [-couplings]
+    \b oversetMotionCheck [-maxHoleFraction F] [-couplings [-sampleEvery K]]
         [-noFunctionObjects] [-parallel]
 
 \*---------------------------------------------------------------------------*/
@@ -222,6 +223,12 @@ int main(int argc, char *argv[])
         "collect the donor-acceptor pairs of every step into"
         " constant/oversetCouplings (serial; for method oversetGraph)"
     );
+    argList::addOption
+    (
+        "sampleEvery",
+        "K",
+        "with -couplings: keep every K-th step's stencil whole (default 10)"
+    );
     #include "setRootCase.H"
     #include "createTime.H"
     #include "createDynamicFvMesh.H"
@@ -237,7 +244,13 @@ int main(int argc, char *argv[])
     autoPtr<oversetCouplings> couplings;
     if (args.found("couplings"))
     {
-        couplings.reset(new oversetCouplings(mesh));
+        couplings.reset
+        (
+            new oversetCouplings
+            (
+                mesh, args.getOrDefault<label>("sampleEvery", 10)
+            )
+        );
     }
     labelList maxHoles(nZones, Zero);
     label nSteps = 0;

@@ -98,6 +98,33 @@ void Foam::couplingReport::countPairs
 }
 
 
+void Foam::couplingReport::countSamples
+(
+    const oversetCouplings& couplings,
+    const labelUList& decomp
+)
+{
+    const labelList& poseStart = couplings.samplePoseStart();
+    const labelList& acceptors = couplings.sampleAcceptors();
+    const labelList& donorStart = couplings.sampleDonorStart();
+    const labelList& donors = couplings.sampleDonors();
+    const scalar perSample = 1.0/max(1, couplings.nSamples());
+    for (label i = 0; i < poseStart.last(); ++i)
+    {
+        const label rank = decomp[acceptors[i]];
+        sampled_[rank] += perSample;
+        for (label j = donorStart[i]; j < donorStart[i + 1]; ++j)
+        {
+            if (decomp[donors[j]] != rank)
+            {
+                remoteAcceptors_[rank] += perSample;
+                break;
+            }
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::couplingReport::couplingReport
@@ -115,7 +142,9 @@ Foam::couplingReport::couplingReport
     work_(nRanks, Zero),
     acceptors_(nRanks, Zero),
     pairs_(nRanks, Zero),
-    remote_(nRanks, Zero)
+    remote_(nRanks, Zero),
+    sampled_(nRanks, Zero),
+    remoteAcceptors_(nRanks, Zero)
 {
     if (decomp.size() != mesh.nCells() || min(decomp) < 0)
     {
@@ -133,10 +162,18 @@ Foam::couplingReport::couplingReport
     }
     countCells(mesh, graph, couplings, decomp);
     countPairs(couplings, decomp);
+    countSamples(couplings, decomp);
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::couplingReport::remoteAcceptorShare() const
+{
+    const scalar all = sum(sampled_);
+    return all > 0 ? sum(remoteAcceptors_)/all : 0;
+}
+
 
 Foam::scalar Foam::couplingReport::cellImbalance() const
 {
@@ -156,10 +193,11 @@ void Foam::couplingReport::write(Ostream& os, const word& prefix) const
     const List<const scalarList*> columns
     ({
         &cells_, &weight_, &work_, &procFaces_, &acceptors_, &pairs_,
-        &remote_
+        &remote_, &sampled_, &remoteAcceptors_
     });
     os  << prefix << ": rank cells weight oversetWork processorFaces"
-        << " acceptors pairs remotePairs" << nl;
+        << " acceptors pairs remotePairs sampledAcceptors remoteAcceptors"
+        << nl;
     forAll(cells_, rank)
     {
         os  << prefix << ": " << rank;
@@ -177,7 +215,7 @@ void Foam::couplingReport::write(Ostream& os, const word& prefix) const
     os  << nl << prefix << ": imbalance cells " << imbalance(cells_)
         << " weight " << imbalance(weight_) << " oversetWork "
         << imbalance(work_) << " remotePairShare " << remotePairShare()
-        << nl;
+        << " remoteAcceptorShare " << remoteAcceptorShare() << nl;
 }
 
 

@@ -67,7 +67,9 @@ void Foam::oversetCouplings::readEntry
             << " is expected"
             << " (an oversetCouplings file lists nCells, nPoses,"
             << " acceptorPoses, donorPoses, holePoses, acceptors, donors,"
-            << " poses in this order)" << exit(FatalIOError);
+            << " poses, sampleEvery, samplePoseStart, sampleAcceptors,"
+            << " sampleDonorStart, sampleDonors in this order)"
+            << exit(FatalIOError);
     }
 }
 
@@ -96,12 +98,32 @@ void Foam::oversetCouplings::checkRead(const label nCells) const
     checkList("acceptors", acceptors_, acceptors_.size(), nCells - 1);
     checkList("donors", donors_, acceptors_.size(), nCells - 1);
     checkList("poses", poses_, acceptors_.size(), nPoses_);
+    const label nEntries = sampleAcceptors_.size();
+    checkList
+    (
+        "samplePoseStart", samplePoseStart_,
+        max(1, samplePoseStart_.size()), nEntries
+    );
+    checkList("sampleAcceptors", sampleAcceptors_, nEntries, nCells - 1);
+    checkList
+    (
+        "sampleDonorStart", sampleDonorStart_, nEntries + 1,
+        sampleDonors_.size()
+    );
+    checkList
+    (
+        "sampleDonors", sampleDonors_, sampleDonors_.size(), nCells - 1
+    );
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::oversetCouplings::oversetCouplings(const fvMesh& mesh)
+Foam::oversetCouplings::oversetCouplings
+(
+    const fvMesh& mesh,
+    const label sampleEvery
+)
 :
     regIOobject
     (
@@ -118,8 +140,18 @@ Foam::oversetCouplings::oversetCouplings(const fvMesh& mesh)
     nPoses_(0),
     acceptorPoses_(mesh.nCells(), Zero),
     donorPoses_(mesh.nCells(), Zero),
-    holePoses_(mesh.nCells(), Zero)
-{}
+    holePoses_(mesh.nCells(), Zero),
+    sampleEvery_(sampleEvery),
+    samplePoseStart_(1, Zero),
+    sampleDonorStart_(1, Zero)
+{
+    if (sampleEvery_ < 1)
+    {
+        FatalErrorInFunction
+            << "sampleEvery " << sampleEvery_ << ": a positive integer is"
+            << " allowed" << exit(FatalError);
+    }
+}
 
 
 Foam::oversetCouplings::oversetCouplings
@@ -140,7 +172,8 @@ Foam::oversetCouplings::oversetCouplings
             false
         )
     ),
-    nPoses_(0)
+    nPoses_(0),
+    sampleEvery_(1)
 {
     if (!typeHeaderOk<oversetCouplings>(true))
     {
@@ -179,6 +212,7 @@ void Foam::oversetCouplings::addPose(const fvMesh& mesh)
     const cellCellStencilObject& overlap = Stencil::New(mesh);
     const labelUList& types = overlap.cellTypes();
     const labelListList& stencil = overlap.cellStencil();
+    const bool sample = (nPoses_ % sampleEvery_ == 0);
     forAll(types, celli)
     {
         if (types[celli] == cellCellStencil::HOLE)
@@ -193,7 +227,17 @@ void Foam::oversetCouplings::addPose(const fvMesh& mesh)
                 ++donorPoses_[donori];
                 ++pairPoses_(labelPair(celli, donori), 0);
             }
+            if (sample)
+            {
+                sampleAcceptors_.append(celli);
+                sampleDonors_.append(stencil[celli]);
+                sampleDonorStart_.append(sampleDonors_.size());
+            }
         }
+    }
+    if (sample)
+    {
+        samplePoseStart_.append(sampleAcceptors_.size());
     }
     ++nPoses_;
 }
@@ -226,6 +270,11 @@ bool Foam::oversetCouplings::readData(Istream& is)
     readEntry(is, "acceptors", acceptors_);
     readEntry(is, "donors", donors_);
     readEntry(is, "poses", poses_);
+    readEntry(is, "sampleEvery", sampleEvery_);
+    readEntry(is, "samplePoseStart", samplePoseStart_);
+    readEntry(is, "sampleAcceptors", sampleAcceptors_);
+    readEntry(is, "sampleDonorStart", sampleDonorStart_);
+    readEntry(is, "sampleDonors", sampleDonors_);
     return is.good();
 }
 
@@ -240,6 +289,11 @@ bool Foam::oversetCouplings::writeData(Ostream& os) const
     os.writeEntry("acceptors", acceptors_);
     os.writeEntry("donors", donors_);
     os.writeEntry("poses", poses_);
+    os.writeEntry("sampleEvery", sampleEvery_);
+    os.writeEntry("samplePoseStart", samplePoseStart_);
+    os.writeEntry("sampleAcceptors", sampleAcceptors_);
+    os.writeEntry("sampleDonorStart", sampleDonorStart_);
+    os.writeEntry("sampleDonors", sampleDonors_);
     return os.good();
 }
 
