@@ -65,6 +65,7 @@ Foam::labelList Foam::graphPartitioner::metis
     METIS_SetDefaultOptions(options);
     options[METIS_OPTION_NUMBERING] = 0;
     options[METIS_OPTION_SEED] = 1;
+    options[METIS_OPTION_NCUTS] = 4;
 
     idx_t nPartsMetis = nParts;
     idx_t edgeCut = 0;
