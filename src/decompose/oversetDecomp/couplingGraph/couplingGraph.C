@@ -150,7 +150,7 @@ Foam::couplingGraph::couplingGraph
             edges[nEdges++] = labelPair(celli, nbri);
         }
     }
-    forAll(acceptors, i)
+    for (label i = 0; couplingWeight > 0 && i < acceptors.size(); ++i)
     {
         const scalar fraction = scalar(poses[i])/nPoses_;
         const label w =
@@ -160,6 +160,8 @@ Foam::couplingGraph::couplingGraph
         edgeWeights[nEdges] = w;
         edges[nEdges++] = labelPair(donors[i], acceptors[i]);
     }
+    edges.setSize(nEdges);
+    edgeWeights.setSize(nEdges);
     setRows(edges, edgeWeights, n);
 }
 
