@@ -5,7 +5,7 @@
 -levels: PREFIX-<level>-step.png (the model's step against ranks per method,
 one panel per stencil, with the timed runs), PREFIX-<level>-split.png (its
 rbd/overset/pimple split per method and stencil), PREFIX-remote.png (the
-remote pair share against ranks, every level) and PREFIX-<level>-48.png
+remote acceptor and pair shares against ranks, every level) and PREFIX-<level>-48.png
 (the paper's bar chart: a step at 48 ranks per method, split)."""
 
 import os
@@ -88,15 +88,16 @@ def remote_chart(data, out):
         for method in METHODS:
             p = sorted(n for (m, n) in st if m == method)
             if p:
-                ax.plot(p, [100*st[(method, n)].pairs.sum()
-                            / st[(method, n)].allPairs.sum() for n in p],
-                        "o-", label=method)
+                line, = ax.plot(p, [100*st[(method, n)].remote_acceptor_share()
+                                    for n in p], "o-", label=method)
+                ax.plot(p, [100*st[(method, n)].remote_pair_share()
+                            for n in p], ":", color=line.get_color())
         ax.axhline(20, color="k", ls="--", lw=0.8)
         ax.set_xscale("log", base=2)
         ax.set_xlabel("ranks")
         ax.set_title("SW %s" % level)
         ax.grid(True, alpha=0.3)
-    axes[0][0].set_ylabel("remote donor-acceptor pairs [%]")
+    axes[0][0].set_ylabel("remote acceptors (solid), pairs (dotted) [%]")
     axes[0][0].legend(fontsize=8)
     save(fig, os.path.dirname(out), os.path.basename(out))
 

@@ -145,28 +145,28 @@ def serial_of(structure):
         d.cells.sum(), d.work.sum(), d.allPairs.sum())
 
 
+def serial_runs(data, stencil):
+    """{level: (serial medians, serial decomposition)} of the levels with
+    a timed serial run of the stencil and a counted structure."""
+    return {lv: (timed[("serial", 1, stencil)], serial_of(data["structure"][lv]))
+            for lv, timed in data["timed"].items()
+            if ("serial", 1, stencil) in timed and lv in data["structure"]}
+
+
 def fit_costs(data, stencil, level):
-    """The stencil's Costs for LEVEL: cFix, cWork fitted to the time
-    level's serial and 2-rank runs, cCell and rbd of its serial run; where
-    LEVEL has a serial run of its own, cCell, rbd and cWork (cFix kept)
-    from that run."""
+    """The stencil's Costs for LEVEL: cFix, cWork fitted to the overset
+    part of the serial runs of every level (the same search box and voxel
+    grid on every level: cFix is the part that does not shrink with the
+    mesh, nor with the ranks); cCell and rbd from LEVEL's serial run (or,
+    without one, from the time level's).  The 2-rank runs only check the
+    model: on this machine they share its 2 cores with the other jobs."""
     costs = scalingModel.Costs(data["machine"], data["pimpleTraffic"],
                                data["fits"][stencil])
-    tl = data["timeLevel"]
-    timed, structure = data["timed"][tl], data["structure"][tl]
-    serial, s1 = serial_of(structure), timed[("serial", 1, stencil)]
-    runs = [(s1["overset"], serial.work[0], 0.0)]
-    for (method, p, s), t in timed.items():
-        if s == stencil and p > 1 and (method, p) in structure:
-            d = structure[(method, p)]
-            comm = scalingModel.stencil_comm(costs, d)
-            runs.append((t["overset"], d.work.max(), comm.max()))
-    costs.fit_overset(runs)
-    costs.cCell, costs.rbd = s1["pimple"]/serial.cells[0], s1["rbd"]
-    own = data["timed"].get(level, {}).get(("serial", 1, stencil))
-    if own and level != tl:
-        d = serial_of(data["structure"][level])
-        costs.fit_serial(own, d.cells[0], d.work[0])
+    serial = serial_runs(data, stencil)
+    costs.fit_overset([(t["overset"], d.work[0], 0.0)
+                       for t, d in serial.values()])
+    t, d = serial.get(level, serial.get(data["timeLevel"]))
+    costs.cCell, costs.rbd = t["pimple"]/d.cells[0], t["rbd"]
     return costs
 
 

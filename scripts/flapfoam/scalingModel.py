@@ -26,11 +26,12 @@ every rank), with, per rank r of P,
 - sMsg, sBytes, sReduce: halo exchanges per neighbour, sweeps by bytes
   and reductions of one PIMPLE step (counted: a flow run minus a motion
   run, 2 ranks);
-- cCell: pimple seconds per cell of a serial run; cFix, cWork: the
-  overset part of serial and 2-rank runs fitted to cFix + cWork max_r W_r
-  (+ the modelled communication); the stock stencil's cFix is its
-  per-rank voxel maps of the whole search box, which do not shrink with
-  P; alpha, beta: one message and one byte between two ranks (ping-pong).
+- cCell: pimple seconds per cell of the level's serial run; cFix, cWork:
+  the overset part of the serial runs of several levels fitted to cFix +
+  cWork W (the search box and its voxel grid are the same on every level:
+  the stock stencil's cFix is its voxel maps of the whole box, which every
+  rank builds, whatever its share of the mesh); alpha, beta: one message
+  and one byte between two ranks (ping-pong).
 
 Assumptions: the work of a rank is proportional to its cells and its
 overset work; halo traffic per step does not depend on the level (the
@@ -89,20 +90,20 @@ class Costs:
         self.traffic = traffic
         self.cCell = self.cFix = self.cWork = self.rbd = 0.0
 
-    def fit_serial(self, serial, n_cells, work):
-        """cCell, rbd and (with cFix kept) cWork from a serial run's
-        medians (dict rbd, overset, pimple) of a mesh of n_cells cells
-        and total overset work."""
-        self.cCell = serial["pimple"]/n_cells
-        self.rbd = serial["rbd"]
-        self.cWork = max(serial["overset"] - self.cFix, 0.0)/work
-
     def fit_overset(self, runs):
         """cFix, cWork from runs [(overset seconds, max_r W_r, modelled
-        communication seconds)] (serial and parallel)."""
+        communication seconds)]: least squares with two runs or more (cFix
+        at least 0), cWork alone from one."""
+        if len(runs) == 1:
+            t, w, c = runs[0]
+            self.cFix, self.cWork = 0.0, (t - c)/w
+            return
         a = least_squares([[1.0, w] for _t, w, _c in runs],
                           [t - c for t, _w, c in runs])
-        self.cFix, self.cWork = max(a[0], 0.0), max(a[1], 0.0)
+        if a[0] < 0:
+            a = [0.0, least_squares([[w] for _t, w, _c in runs],
+                                    [t - c for t, _w, c in runs])[0]]
+        self.cFix, self.cWork = a[0], max(a[1], 0.0)
 
 
 class Decomposition:
@@ -121,6 +122,16 @@ class Decomposition:
         self.allPairs = col["pairs"]
         self.neighbours = np.asarray(neighbours, float)
         self.info = table["info"]
+
+    def remote_pair_share(self):
+        """Donor-acceptor pairs of the cycle with the donor on another
+        rank, over all pairs."""
+        return self.pairs.sum()/self.allPairs.sum()
+
+    def remote_acceptor_share(self):
+        """Acceptors with a donor on another rank over all acceptors (the
+        couplings' poses kept whole; NaN for a report without them)."""
+        return float(self.info.get("remoteAcceptorShare", float("nan")))
 
 
 def stencil_comm(costs, d):
