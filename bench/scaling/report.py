@@ -51,10 +51,11 @@ def traffic_table(data):
         "| method | ranks | stencil | bytes max [MB] | bytes mean [MB] | "
         "messages max | remote acceptors | peak memory [MiB] |",
         "|---|---:|---|---:|---:|---:|---:|---:|"]
-    keys = sorted((k for k in data["traffic"] if k[0] in METHODS),
+    traffic = data["traffic"][data["countLevel"]]
+    keys = sorted((k for k in traffic if k[0] in METHODS),
                   key=lambda k: (k[2], METHODS.index(k[0]), k[1]))
     for method, p, stencil in keys:
-        e = data["traffic"][(method, p, stencil)]
+        e = traffic[(method, p, stencil)]
         b = [s["p2pBytes"] for s in e["perStep"]]
         m = [s["p2pCalls"] for s in e["perStep"]]
         share = e["report"]["info"].get("remoteShare", float("nan")) \
@@ -62,11 +63,40 @@ def traffic_table(data):
         lines.append("| %s | %d | %s | %.3f | %.3f | %.0f | %.1f %% | %.0f |"
                      % (method, p, SHORT[stencil], max(b)/1e6,
                         sum(b)/len(b)/1e6, max(m), 100*share, e["memory"]))
-    s_msg, s_bytes, s_reduce = data["pimpleTraffic"]
     lines += ["", "PIMPLE (a flow run minus a motion run, octree, "
-              "hierarchical, 2 ranks, per step): %.0f halo messages per "
-              "neighbour, %.0f sweeps of 8 bytes per processor face, %.0f "
-              "reductions." % (s_msg, s_bytes, s_reduce)]
+              "hierarchical, 2 ranks, per step; the model uses a level's own "
+              "where counted, else the count level's):"]
+    for level, (s_msg, s_bytes, s_reduce) in sorted(
+            (k, v) for k, v in data["pimpleTraffic"].items() if k):
+        lines.append("%s %.0f halo messages per neighbour, %.0f sweeps of 8 "
+                     "bytes per processor face, %.0f reductions;"
+                     % (level, s_msg, s_bytes, s_reduce))
+    return lines
+
+
+def traffic_check_table(data):
+    """Traffic counted on levels other than the count level against the
+    fit (per step, the rank that sends most)."""
+    lines = ["", "### Counted traffic on other levels against the fit "
+             "(per step, the rank that sends most)", "",
+             "| level | method | ranks | stencil | bytes counted [MB] | fit "
+             "[MB] | messages counted | fit | peak memory [MiB] |",
+             "|---|---|---:|---|---:|---:|---:|---:|---:|"]
+    for level, traffic in sorted(data["traffic"].items()):
+        if level == data["countLevel"]:
+            continue
+        for (method, p, stencil), e in sorted(traffic.items()):
+            d = data["structure"][level].get((method, p))
+            if d is None or stencil not in data["fits"]:
+                continue
+            fit = [data["fits"][stencil].predict(p, x) for x in d.pairs]
+            lines.append("| %s | %s | %d | %s | %.3f | %.3f | %.0f | %.0f | "
+                         "%.0f |" % (
+                             level, method, p, SHORT[stencil],
+                             max(r["p2pBytes"] for r in e["perStep"])/1e6,
+                             max(b for b, _m in fit)/1e6,
+                             max(r["p2pCalls"] for r in e["perStep"]),
+                             max(m for _b, m in fit), e["memory"]))
     return lines
 
 
@@ -75,8 +105,11 @@ def costs_table(data):
     lines = [
         "", "### The model's costs (measured here)", "",
         "One message alpha = %.2e s, one byte beta = %.2e s (pingPong.c, 2 "
-        "ranks). Traffic fit per rank and step: value = c0 + c1 (P - 1) + "
-        "c2 remotePairs." % (alpha, beta), "",
+        "ranks). Traffic fit per rank and step (every counted rank of every "
+        "level): value = c0 + c1 (P - 1) + c2 remotePairs. The serial runs of all levels together: "
+        "overset = cFix + cWork W with %s." % (alpha, beta, "; ".join(
+            "%s cFix %.3f s, cWork %.2f us" % (SHORT[s], c[0], 1e6*c[1])
+            for s, c in sorted(data["fixedOverset"].items()))), "",
         "| level | stencil | cCell [us] | cFix [s] | cWork [us] | rbd [s] | "
         "bytes c0, c1, c2 | messages c0, c1, c2 | fit max error (bytes, "
         "messages) |",
@@ -206,6 +239,7 @@ def tables(data):
     lines += check_table(data)
     lines += costs_table(data)
     lines += traffic_table(data)
+    lines += traffic_check_table(data)
     for level in sorted(data["structure"]):
         lines += structure_table(level, data["structure"][level])
     return lines

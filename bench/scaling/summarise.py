@@ -9,8 +9,9 @@
 
 Reads what run left in DIR: the counted structure of every level
 (DIR/<level>/structure/<method>-np<N>.report, .cellDecomposition), the
-counted traffic of the count level (DIR/<L>/traffic/<run>-s<N>/counts, the
-oversetRankReport of its log, its peak memory), the timed runs
+counted traffic of every level that has some (DIR/<level>/traffic/<run>-s<N>/
+counts, the oversetRankReport of its log, its peak memory: the count level's
+and any other counted with -countLevel), the timed runs
 (DIR/<level>/timed/<run>-r<R>/postProcessing/stepTimers) and
 DIR/pingPong.log; fits the model's costs (flapfoam.scalingModel) and writes
 PREFIX.md (tables: structure, traffic, timed against the model, the
@@ -125,16 +126,33 @@ def pimple_traffic(traffic, structure):
             flow["collectiveCalls"] - motion["collectiveCalls"])
 
 
-def traffic_fit(traffic, structure, stencil):
-    """The stencil's TrafficFit from the counted runs (every rank)."""
+def traffic_fit(data, stencil):
+    """The stencil's TrafficFit from the counted runs of every level (every
+    rank)."""
     rows = []
-    for (method, p, s), e in traffic.items():
-        if s != stencil or method == "solver" or (method, p) not in structure:
-            continue
-        d = structure[(method, p)]
-        for r, step in enumerate(e["perStep"]):
-            rows.append((p, d.pairs[r], step["p2pBytes"], step["p2pCalls"]))
+    for level, traffic in data["traffic"].items():
+        structure = data["structure"][level]
+        for (method, p, s), e in traffic.items():
+            if s != stencil or (method, p) not in structure:
+                continue
+            d = structure[(method, p)]
+            for r, step in enumerate(e["perStep"]):
+                rows.append((p, d.pairs[r], step["p2pBytes"],
+                             step["p2pCalls"]))
     return scalingModel.TrafficFit(rows)
+
+
+def pimple_traffics(data, count_level):
+    """{level: (sMsg, sBytes, sReduce)} of the levels with the flow and
+    motion runs counted, and None: the count level's (for the others)."""
+    out = {}
+    for level, traffic in data["traffic"].items():
+        try:
+            out[level] = pimple_traffic(traffic, data["structure"][level])
+        except KeyError:
+            continue
+    out[None] = out[count_level]
+    return out
 
 
 def serial_of(structure):
@@ -154,20 +172,32 @@ def serial_runs(data, stencil):
 
 
 def fit_costs(data, stencil, level):
-    """The stencil's Costs for LEVEL: cFix, cWork fitted to the overset
-    part of the serial runs of every level (the same search box and voxel
-    grid on every level: cFix is the part that does not shrink with the
-    mesh, nor with the ranks); cCell and rbd from LEVEL's serial run (or,
-    without one, from the time level's).  The 2-rank runs only check the
-    model: on this machine they share its 2 cores with the other jobs."""
-    costs = scalingModel.Costs(data["machine"], data["pimpleTraffic"],
+    """The stencil's Costs for LEVEL from LEVEL's serial run (or, without
+    one, the time level's): cCell, rbd, and cWork (cFix 0: the serial runs
+    of tiny, coarse and fine show no part of the overset work that stays
+    fixed as the mesh grows, see the costs table).  The 2-rank runs only
+    check the model: on this machine they share its 2 cores with the
+    other jobs."""
+    pimple = data["pimpleTraffic"]
+    costs = scalingModel.Costs(data["machine"],
+                               pimple.get(level, pimple[None]),
                                data["fits"][stencil])
     serial = serial_runs(data, stencil)
-    costs.fit_overset([(t["overset"], d.work[0], 0.0)
-                       for t, d in serial.values()])
     t, d = serial.get(level, serial.get(data["timeLevel"]))
+    costs.fit_overset([(t["overset"], d.work[0], 0.0)])
     costs.cCell, costs.rbd = t["pimple"]/d.cells[0], t["rbd"]
     return costs
+
+
+def fixed_overset(data, stencil):
+    """cFix, cWork of the serial runs of all levels together (least
+    squares, cFix >= 0): whether a part of the overset work does not
+    shrink with the mesh."""
+    costs = scalingModel.Costs(data["machine"], data["pimpleTraffic"][None],
+                               data["fits"][stencil])
+    costs.fit_overset([(t["overset"], d.work[0], 0.0)
+                       for t, d in serial_runs(data, stencil).values()])
+    return costs.cFix, costs.cWork
 
 
 def predictions(data):
@@ -196,17 +226,20 @@ def load(args):
                            os.path.join(args.dir, lv, "base"))
         for lv in levels
         if glob.glob(os.path.join(args.dir, lv, "structure", "*.report"))}
-    data["traffic"] = read_traffic(
-        os.path.join(args.dir, args.countLevel, "traffic"), *args.countSteps)
+    data["traffic"] = {
+        lv: read_traffic(os.path.join(args.dir, lv, "traffic"),
+                         *args.countSteps)
+        for lv in data["structure"]
+        if os.path.isdir(os.path.join(args.dir, lv, "traffic"))}
     data["timed"] = {lv: read_timed(os.path.join(args.dir, lv, "timed"),
                                     args.startup) for lv in levels}
     data["machine"] = read_ping_pong(os.path.join(args.dir, "pingPong.log"))
-    count = data["structure"][args.countLevel]
-    data["pimpleTraffic"] = pimple_traffic(data["traffic"], count)
-    data["stencils"] = [s for s in STENCILS
-                        if any(k[2] == s for k in data["traffic"])]
-    data["fits"] = {s: traffic_fit(data["traffic"], count, s)
-                    for s in data["stencils"]}
+    data["pimpleTraffic"] = pimple_traffics(data, args.countLevel)
+    data["stencils"] = [s for s in STENCILS if any(
+        k[2] == s for k in data["traffic"][args.countLevel])]
+    data["fits"] = {s: traffic_fit(data, s) for s in data["stencils"]}
+    data["fixedOverset"] = {s: fixed_overset(data, s)
+                            for s in data["stencils"]}
     data["model"] = predictions(data)
     data["levels"] = [lv for lv in args.levels.split()
                       if lv in data["structure"]]

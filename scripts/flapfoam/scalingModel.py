@@ -26,12 +26,11 @@ every rank), with, per rank r of P,
 - sMsg, sBytes, sReduce: halo exchanges per neighbour, sweeps by bytes
   and reductions of one PIMPLE step (counted: a flow run minus a motion
   run, 2 ranks);
-- cCell: pimple seconds per cell of the level's serial run; cFix, cWork:
-  the overset part of the serial runs of several levels fitted to cFix +
-  cWork W (the search box and its voxel grid are the same on every level:
-  the stock stencil's cFix is its voxel maps of the whole box, which every
-  rank builds, whatever its share of the mesh); alpha, beta: one message
-  and one byte between two ranks (ping-pong).
+- cCell, cWork: pimple and overset seconds per cell and per unit of
+  overset work of the level's serial run; cFix: overset work that every
+  rank repeats whatever its share (e.g. search-box voxels, the same on
+  every level): 0 where the serial runs of several levels show none;
+  alpha, beta: one message and one byte between two ranks (ping-pong).
 
 Assumptions: the work of a rank is proportional to its cells and its
 overset work; halo traffic per step does not depend on the level (the
