@@ -1,0 +1,113 @@
+#!/usr/bin/python3
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
+"""Checks of the scaling bench's Python pieces on inputs whose answers are
+known (bench/scaling/Alltest runs it): flapfoam.rankTables (a couplingReport
+and an oversetRankReport table with their extra lines, cellDist to
+cellDecomposition, neighbour ranks of a 2x2 mesh) and flapfoam.scalingModel
+(an exact traffic fit, the step of a 2-rank decomposition by hand).  PASS
+and FAIL lines; exit status 1 if one fails.
+
+    bench/scaling/checkModel.py DIR      (DIR: a scratch folder)
+"""
+
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.environ.get("FLAPFOAM_PROJECT_DIR", os.path.join(
+    os.path.dirname(os.path.abspath(__file__)), "../..")) + "/scripts")
+from flapfoam import rankTables, scalingModel  # noqa: E402
+
+HEADER = "FoamFile { version 2.0; format ascii; class %s; object %s; }\n"
+REPORT = """x: 2 ranks, 6 cells, 3 poses of "c", decomposition "d"
+x: rank cells weight oversetWork processorFaces acceptors pairs remotePairs
+x: 0 4 4 10 2 3 9 1
+x: 1 2 2 6 2 1 3 2
+x: total 6 6 16 4 4 12 3
+x: imbalance cells 1.3333 weight 1.3333 remotePairShare 0.25
+"""
+failed = []
+
+
+def check(name, ok, detail=""):
+    print("%s %s%s" % ("PASS" if ok else "FAIL", name,
+                       (": " + detail) if detail else ""))
+    if not ok:
+        failed.append(name)
+
+
+def write(path, text):
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
+def check_tables(tmp):
+    t = rankTables.read_table(write(os.path.join(tmp, "log"), REPORT), "x")
+    check("report rows", [r["cells"] for r in t["rows"]] == [4, 2]
+          and t["total"]["remotePairs"] == 3, str(t["rows"]))
+    check("report info", t["info"]["remotePairShare"] == 0.25
+          and t["info"]["cells"] == 1.3333, str(t["info"]))
+    dist = write(os.path.join(tmp, "cellDist"),
+                 HEADER % ("volScalarField", "cellDist")
+                 + "dimensions [0 0 0 0 0 0 0];\ninternalField nonuniform "
+                 "List<scalar> 4(0 1 1 0);\nboundaryField {}\n")
+    out = os.path.join(tmp, "cellDecomposition")
+    rankTables.cell_decomposition(dist, out)
+    ranks = rankTables.read_decomposition(out)
+    check("cellDist to cellDecomposition", list(ranks) == [0, 1, 1, 0],
+          str(ranks))
+    # 2x2 cells 0 1 / 2 3: internal faces 0-1, 2-3, 0-2, 1-3
+    mesh = os.path.join(tmp, "polyMesh")
+    os.makedirs(mesh, exist_ok=True)
+    write(os.path.join(mesh, "owner"), HEADER % ("labelList", "owner")
+          + "4(0 2 0 1)\n")
+    write(os.path.join(mesh, "neighbour"), HEADER % ("labelList", "neighbour")
+          + "4(1 3 2 3)\n")
+    nbr = rankTables.neighbour_ranks(mesh, np.array([0, 1, 2, 2]))
+    check("neighbour ranks", list(nbr) == [2, 2, 2], str(nbr))
+
+
+def check_model():
+    rows = [(p, w, 5 + 7*(p - 1) + 3*w, 2 + (p - 1)) for p, w in
+            ((2, 1), (2, 4), (4, 0), (8, 5), (16, 2))]
+    fit = scalingModel.TrafficFit(rows)
+    check("traffic fit exact", np.allclose(fit.bytes, [5, 7, 3])
+          and np.allclose(fit.messages, [2, 1, 0], atol=1e-9)
+          and fit.error.max() < 1e-12, "%s %s" % (fit.bytes, fit.messages))
+    costs = scalingModel.Costs((1e-6, 1e-9), (10, 2, 4), fit)
+    costs.cCell, costs.cWork, costs.rbd = 1e-6, 1e-5, 0.01
+    table = {"columns": ["cells", "processorFaces", "oversetWork",
+                         "remotePairs", "acceptors", "pairs"],
+             "rows": [{"cells": 1000, "processorFaces": 50,
+                       "oversetWork": 100, "remotePairs": 10,
+                       "acceptors": 5, "pairs": 40},
+                      {"cells": 800, "processorFaces": 50,
+                       "oversetWork": 300, "remotePairs": 0,
+                       "acceptors": 7, "pairs": 60}],
+             "info": {}}
+    step = scalingModel.predict(costs, scalingModel.Decomposition(table,
+                                                                  [1, 1]))
+    # rank 1 overset: 3e-3 + 1e-6 (2 + 1) + 1e-9 (5 + 7); rank 0 pimple:
+    # 1e-3 + 1e-6 (10 + 4*2) + 1e-9*2*8*50
+    overset = 3e-3 + 3e-6 + 12e-9
+    pimple = 1e-3 + 18e-6 + 800e-9
+    check("step of 2 ranks", abs(step["overset"] - overset) < 1e-15
+          and abs(step["pimple"] - pimple) < 1e-15
+          and abs(step["total"] - 0.01 - overset - pimple) < 1e-15, str(step))
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit("usage: checkModel.py DIR")
+    os.makedirs(sys.argv[1], exist_ok=True)
+    check_tables(sys.argv[1])
+    check_model()
+    sys.exit(1 if failed else 0)
+
+
+if __name__ == "__main__":
+    main()
