@@ -40,25 +40,33 @@ def _value(word):
 def read_tables(fname, prefix):
     """The tables of the lines "PREFIX: ..." of FILE, in order: each a dict
     with "columns", "rows" (list, index = rank: {column: value}), the
-    summary rows ("total", "max", "mean" where present) and the "key value"
+    summary rows ("total", "max", "mean" where present), the "key value"
     pairs of its other lines (in "info"; a line of another form, e.g.
-    "48 ranks, 29732 cells, ...", is kept there word by word too); a
-    header line starts a table."""
+    "48 ranks, 29732 cells, ...", is kept there word by word too) and
+    "line", the index in FILE of its first line.  A line "time ..."
+    (oversetRankReport's title) starts a table, and so does a header line
+    unless it follows such a title."""
     tables = []
     tag = prefix + ":"
+
+    def start(i):
+        tables.append({"columns": [], "rows": [], "info": {}, "line": i})
+
     with open(fname, errors="replace") as f:
-        for line in f:
+        for i, line in enumerate(f):
             if not line.startswith(tag):
                 continue
             words = line[len(tag):].split()
             if not words:
                 continue
-            if words[0] == "rank":
-                tables.append({"columns": words[1:], "rows": [], "info": {}})
-                continue
-            if not tables:
-                tables.append({"columns": [], "rows": [], "info": {}})
+            if words[0] == "time" or not tables:
+                start(i)
             t = tables[-1]
+            if words[0] == "rank":
+                if t["columns"] or t["rows"]:
+                    start(i)
+                tables[-1]["columns"] = words[1:]
+                continue
             is_row = (words[0].isdigit() and t["columns"]
                       and len(words) == len(t["columns"]) + 1)
             if is_row or words[0] in SUMMARIES:

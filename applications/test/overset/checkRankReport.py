@@ -39,7 +39,9 @@ import os
 import re
 import sys
 
-PREFIX = "oversetRankReport:"
+from flapfoam import rankTables
+
+PREFIX = "oversetRankReport"
 STOCK = "inverseDistance"
 ANALYSIS = re.compile(
     r"interpolated : (\d+) \(interpolated from local:(\d+)\s+"
@@ -47,36 +49,28 @@ ANALYSIS = re.compile(
 
 
 def readReports(log):
-    """The reports of a log, each a dict: time, stencil, ranks, columns,
-    rows (per rank), total, max, mean, cellImbalance, remoteShare and
-    analysis (the stock stencil's last count line before it, or None)."""
-    reports, analysis = [], None
-    for line in open(log, errors="replace"):
+    """The reports of a log (flapfoam.rankTables), each a dict: time,
+    stencil, ranks, columns, rows (per rank), total, max, mean (counts as
+    integers), cellImbalance, remoteShare and analysis (the stock stencil's
+    last count line before it, or None)."""
+    analyses = []
+    for i, line in enumerate(open(log, errors="replace")):
         m = ANALYSIS.search(line)
         if m:
-            analysis = tuple(int(x) for x in m.groups())
-        if not line.startswith(PREFIX):
-            continue
-        words = line[len(PREFIX):].split()
-        if words[0] == "time":
-            reports.append(dict(time=words[1], stencil=words[3],
-                                ranks=int(words[5]), rows=[],
-                                analysis=analysis))
-            continue
-        r = reports[-1]
-        if words[0] == "rank":
-            r["columns"] = words[1:]
-        elif words[0] == "cellImbalance":
-            r["cellImbalance"] = float(words[1])
-            r["remoteShare"] = float(words[3])
-        elif words[0] == "mean":
-            r["mean"] = dict(zip(r["columns"], map(float, words[1:])))
-        else:
-            row = dict(zip(r["columns"], map(int, words[1:])))
-            if words[0] in ("total", "max"):
-                r[words[0]] = row
-            else:
-                r["rows"].append(row)
+            analyses.append((i, tuple(int(x) for x in m.groups())))
+    reports = []
+    for t in rankTables.read_tables(log, PREFIX):
+        info = t["info"]
+        before = [a for i, a in analyses if i < t["line"]]
+        counts = [{k: int(v) for k, v in row.items()} for row in t["rows"]]
+        reports.append(dict(
+            time=info.get("time"), stencil=info.get("stencil"),
+            ranks=int(info.get("ranks", 0)), columns=t["columns"],
+            rows=counts, total={k: int(v) for k, v in t["total"].items()},
+            max={k: int(v) for k, v in t["max"].items()}, mean=t["mean"],
+            cellImbalance=info.get("cellImbalance"),
+            remoteShare=info.get("remoteShare"),
+            analysis=before[-1] if before else None))
     return reports
 
 
