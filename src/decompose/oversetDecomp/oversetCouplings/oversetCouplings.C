@@ -58,7 +58,10 @@ void Foam::oversetCouplings::readEntry
 )
 {
     const word found(is);
-    is >> value;
+    if (found == key)
+    {
+        is >> value;
+    }
     const token end(is);
     if (found != key || end != token::END_STATEMENT)
     {
