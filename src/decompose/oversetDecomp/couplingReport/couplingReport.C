@@ -175,12 +175,6 @@ Foam::scalar Foam::couplingReport::remoteAcceptorShare() const
 }
 
 
-Foam::scalar Foam::couplingReport::cellImbalance() const
-{
-    return imbalance(cells_);
-}
-
-
 Foam::scalar Foam::couplingReport::remotePairShare() const
 {
     const scalar allPairs = sum(pairs_);
