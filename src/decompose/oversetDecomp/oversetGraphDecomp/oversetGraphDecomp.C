@@ -125,8 +125,8 @@ Foam::oversetGraphDecomp::oversetGraphDecomp
 Foam::labelList Foam::oversetGraphDecomp::decompose
 (
     const polyMesh& mesh,
-    const pointField& points,
-    const scalarField& pointWeights
+    const pointField&,
+    const scalarField& cellWeights
 ) const
 {
     if (Pstream::parRun())
@@ -139,7 +139,7 @@ Foam::labelList Foam::oversetGraphDecomp::decompose
     );
     const couplingGraph graph
     (
-        mesh, couplings, couplingWeight_, pointWeights
+        mesh, couplings, couplingWeight_, cellWeights
     );
     const labelList decomp(partitioner_.partition(graph, nDomains_));
     Info<< typeName << ": " << nDomains_ << " ranks, " << mesh.nCells()
