@@ -69,7 +69,7 @@ Foam::label Foam::bodyLoad::treeBodyID
     if (bodyID < 0)
     {
         FatalIOErrorInFunction(bodyDict)
-            << "body " << name << " cannot carry patches or a cellZone:"
+            << "body " << name << " cannot carry patches, a cellZone or a wing:"
             << " it is not a body of the tree (unknown, or merged: merged"
             << " bodies move with their master)" << exit(FatalIOError);
     }
