@@ -1,0 +1,137 @@
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
+"""
+An independent reference of the quasi-steady blade-element wing (the
+definition of bodyLoads::aerodynamics / quasiSteady, written apart from the
+C++) and of the single-wing drone's translational equations under it.
+
+The single-wing tree (Pz heave, Px surge, Rz flapping, Ry pitching, the
+wing's centre of mass on both rotation axes) moves its mass only through
+the two translations, so with the wing's rotations prescribed
+    m x'' = F_x,   m z'' = F_z - m g
+is exact; the force is the blade elements' at the wing's current motion.
+
+    python3 -m flapfoam.quasiSteady DYNAMICMESHDICT -cycles 5 -out FILE
+
+writes t x z xDot zDot (one row per output step) from rest at t = 0.
+numpy and scipy.
+"""
+
+import argparse
+import math
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+from flapfoam.foamDict import multibodyCoeffs
+from flapfoam.wang import imposedJoints
+
+
+def vec(tokens):
+    return np.array([float(v) for v in tokens if v not in ("(", ")")])
+
+
+class Wing:
+    """The strips of one quasiSteady entry (the issue's definition)."""
+
+    def __init__(self, entry):
+        R = float(entry["length"][0])
+        N = int(entry.get("nStrips", ["40"])[0])
+        r = (np.arange(N) + 0.5)*R/N
+        if entry["chordDistribution"][0] == "semiElliptic":
+            cbar = float(entry["meanChord"][0])
+            c = 4.0*cbar/math.pi*np.sqrt(1.0 - (r/R)**2)
+        else:
+            table = vec(entry["chords"]).reshape(-1, 2)
+            c = np.interp(r, table[:, 0], table[:, 1])
+        self.area = c*R/N
+        self.span = vec(entry["span"])
+        self.chord = vec(entry["chord"])
+        self.points = vec(entry["root"]) + np.outer(r, self.span)
+        self.rho = float(entry["rho"][0])
+        self.CL = float(entry.get("CL", ["1.2"])[0])
+        self.CD0 = float(entry.get("CD0", ["0.4"])[0])
+        self.CD1 = float(entry.get("CD1", ["1.0"])[0])
+        self.wind = vec(entry.get("wind", ["0", "0", "0"]))
+
+    def force(self, E, origin, vOrigin, omega):
+        """Force and moment (global origin) for the body's orientation E
+        (body -> global), origin position and velocity, angular velocity."""
+        s, c = E @ self.span, E @ self.chord
+        n = np.cross(c, s)
+        arm = self.points @ E.T
+        u = self.wind - (vOrigin + np.cross(omega, arm))
+        uPerp = u - np.outer(u @ s, s)
+        U = np.linalg.norm(uPerp, axis=1)
+        live = U >= 1e-12
+        eD = uPerp[live]/U[live, None]
+        alpha = np.arccos(np.minimum(1.0, np.abs(eD @ c)))
+        eL = np.cross(s, eD)
+        eL /= np.linalg.norm(eL, axis=1)[:, None]
+        eL *= np.where((eL @ n)*(uPerp[live] @ n) < 0, -1.0, 1.0)[:, None]
+        CL = self.CL*np.sin(2*alpha)
+        CD = self.CD0 + self.CD1*(1 - np.cos(2*alpha))
+        dF = (0.5*self.rho*U[live]**2*self.area[live])[:, None] \
+            *(CL[:, None]*eL + CD[:, None]*eD)
+        return dF.sum(axis=0), np.cross(origin + arm[live], dF).sum(axis=0)
+
+
+def rotation(axis, angle):
+    c, s = math.cos(angle), math.sin(angle)
+    if axis == "z":
+        return np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
+    return np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]])
+
+
+class SingleWingDrone:
+    """x, z of the single-wing tree (joints 0 Pz, 1 Px, 2 Rz, 3 Ry)."""
+
+    def __init__(self, coeffs):
+        wing = coeffs["bodies"]["wing"]
+        self.mass = float(wing["mass"][0])
+        self.g = -vec(coeffs.get("g", ["0", "0", "0"]))[2]
+        joints = imposedJoints(coeffs)
+        self.phi, self.alpha = joints[2], joints[3]
+        entries = [e for e in coeffs["aerodynamics"].values()
+                   if isinstance(e, dict)]
+        self.wing = Wing(entries[0])
+
+    def rhs(self, t, y):
+        x, z, xDot, zDot = y
+        phi, phiDot, _ = self.phi(t)
+        alpha, alphaDot, _ = self.alpha(t)
+        Rz = rotation("z", float(phi))
+        E = Rz @ rotation("y", float(alpha))
+        omega = np.array([0, 0, float(phiDot)]) \
+            + float(alphaDot)*(Rz @ np.array([0, 1, 0]))
+        F, _ = self.wing.force(E, np.array([x, 0, z]),
+                               np.array([xDot, 0, zDot]), omega)
+        return [xDot, zDot, F[0]/self.mass, F[2]/self.mass - self.g]
+
+    def fly(self, endTime, dt):
+        t = np.arange(0, endTime + 0.5*dt, dt)
+        sol = solve_ivp(self.rhs, (0, t[-1]), [0, 0, 0, 0], t_eval=t,
+                        method="DOP853", rtol=1e-10, atol=1e-13)
+        return np.column_stack([sol.t, sol.y.T])
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("dict", help="dynamicMeshDict with an aerodynamics"
+                        " entry in its multibody coefficients")
+    parser.add_argument("-cycles", type=float, default=5)
+    parser.add_argument("-dt", type=float, default=1e-4,
+                        help="output interval [s]")
+    parser.add_argument("-out", required=True)
+    args = parser.parse_args()
+    if args.cycles <= 0 or args.dt <= 0:
+        parser.error("-cycles %g, -dt %g: both must be positive"
+                     % (args.cycles, args.dt))
+    drone = SingleWingDrone(multibodyCoeffs(args.dict))
+    endTime = args.cycles/drone.phi.frequency
+    np.savetxt(args.out, drone.fly(endTime, args.dt), header="t x z xDot zDot")
+
+
+if __name__ == "__main__":
+    main()
