@@ -88,6 +88,46 @@ TEST(Errors, UnknownTypeListsValidTypes)
 }
 
 
+TEST(Errors, UnknownKeyListsAllowedKeys)
+{
+    // A misspelled optional key of every type: FatalIOError naming it and
+    // listing the type's keys
+    expectMotionError
+    (
+        "type harmonic; joint 0; amplitude 1; frequency 2; phse 0.5;",
+        {"'phse'", "harmonic", "allowed keys", "phase", "offset", "joint"}
+    );
+    expectMotionError
+    (
+        "type wang; joint 0; waveform flapping; amplitude 1; frequency 2;"
+        " K 0.5; ofset 1;",
+        {"'ofset'", "allowed keys", "waveform", "K", "phase", "offset"}
+    );
+    expectMotionError
+    (
+        "type fourier; joint 0; frequency 2; a (1); A0 1;",
+        {"'A0'", "allowed keys", "a0", "frequency"}
+    );
+    expectMotionError
+    (
+        "type tabulated; joint 0; offest 1; " + valuesEntry(tabT, tabQ),
+        {"'offest'", "allowed keys", "values", "file", "offset"}
+    );
+    expectMotionError
+    (
+        wangParametrizationText("Kphy 0.3;"),
+        {"'Kphy'", "allowed keys", "Kphi", "jointList"}
+    );
+
+    // The joints key of another type is unknown too
+    expectMotionError
+    (
+        "type harmonic; jointList (0 1); joint 0; amplitude 1; frequency 2;",
+        {"'jointList'", "allowed keys", "joint"}
+    );
+}
+
+
 TEST(Errors, MissingKeys)
 {
     expectMotionError("joint 0; amplitude 1; frequency 1;", {"'type'"});

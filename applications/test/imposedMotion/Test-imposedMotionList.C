@@ -157,6 +157,33 @@ TEST(ImposedMotionList, EmptyWithoutSubDictionary)
 }
 
 
+TEST(ImposedMotionList, AuthorsSpelling)
+{
+    // The paper authors' code reads the sub-dictionary ImposedMotion
+    std::string authors(modelText);
+    authors.replace(authors.find("imposedMotion"), 13, "ImposedMotion");
+
+    const imposedMotionList ours(makeDict(modelText), labelList(7, 1));
+    const imposedMotionList theirs(makeDict(authors), labelList(7, 1));
+
+    EXPECT_EQ(theirs.size(), 3);
+    EXPECT_EQ(theirs.joints(), ours.joints());
+
+    scalarField q1(7, Zero), qDot1(7, Zero), qDdot1(7, Zero);
+    scalarField q2(7, Zero), qDot2(7, Zero), qDdot2(7, Zero);
+    ours.evaluate(0.0123, q1, qDot1, qDdot1);
+    theirs.evaluate(0.0123, q2, qDot2, qDdot2);
+    EXPECT_EQ(q1, q2);
+    EXPECT_EQ(qDot1, qDot2);
+    EXPECT_EQ(qDdot1, qDdot2);
+
+    // Written with flapFoam's spelling
+    OStringStream os;
+    theirs.write(os);
+    EXPECT_TRUE(makeDict(os.str()).found("imposedMotion"));
+}
+
+
 TEST(ImposedMotionList, WriteRoundTrips)
 {
     const imposedMotionList list(makeDict(modelText), labelList(7, 1));
@@ -374,6 +401,33 @@ TEST(Errors, ImposedMotionListNotDictionaries)
             );
         },
         {"'imposedMotion'", "not a dictionary"}
+    );
+    expectIOError
+    (
+        [&]()
+        {
+            imposedMotionList
+            (
+                makeDict("ImposedMotion none;"), labelList(4, 1)
+            );
+        },
+        {"'ImposedMotion'", "not a dictionary"}
+    );
+}
+
+
+TEST(Errors, ImposedMotionListBothSpellings)
+{
+    expectIOError
+    (
+        [&]()
+        {
+            imposedMotionList
+            (
+                makeDict(modelText + "ImposedMotion { }"), labelList(7, 1)
+            );
+        },
+        {"'imposedMotion'", "'ImposedMotion'", "Both", "one of them"}
     );
 }
 

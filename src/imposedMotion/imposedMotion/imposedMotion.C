@@ -21,6 +21,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "imposedMotion.H"
+#include "StringStream.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -50,6 +51,53 @@ Foam::scalar Foam::imposedMotion::getPositive
     }
 
     return value;
+}
+
+
+void Foam::imposedMotion::checkKeys() const
+{
+    wordList allowed(allowedKeys());
+    allowed.append(word("type"));
+    allowed.append(jointsKey());
+    const wordList ignored(ignoredKeys());
+
+    wordList ignoredFound;
+
+    for (const entry& e : dict_)
+    {
+        const word& key = e.keyword();
+
+        if (ignored.found(key))
+        {
+            ignoredFound.append(key);
+        }
+        else if (!allowed.found(key))
+        {
+            OStringStream keys;
+            for (const word& k : allowed)
+            {
+                keys << ' ' << k;
+            }
+            for (const word& k : ignored)
+            {
+                keys << ' ' << k << " (ignored)";
+            }
+
+            FatalIOErrorInFunction(dict_)
+                << "Unknown entry '" << key << "' in '" << name_
+                << "' (type " << type() << "): allowed keys are"
+                << keys.str().c_str() << nl
+                << exit(FatalIOError);
+        }
+    }
+
+    if (ignoredFound.size())
+    {
+        IOWarningInFunction(dict_)
+            << "Entries " << ignoredFound << " of '" << name_
+            << "' (type " << type() << ") are keys of the paper authors'"
+            << " code that flapFoam does not use: ignored" << endl;
+    }
 }
 
 

@@ -45,7 +45,10 @@ Foam::autoPtr<Foam::imposedMotion> Foam::imposedMotion::New
         ) << exit(FatalIOError);
     }
 
-    return autoPtr<imposedMotion>(cstrIter()(name, dict));
+    autoPtr<imposedMotion> motionPtr(cstrIter()(name, dict));
+    motionPtr->checkKeys();
+
+    return motionPtr;
 }
 
 

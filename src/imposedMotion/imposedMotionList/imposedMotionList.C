@@ -25,6 +25,29 @@ License
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+Foam::word Foam::imposedMotionList::findKey(const dictionary& modelDict)
+{
+    // flapFoam's spelling and the paper authors' (their rigidBodyModel reads
+    // ImposedMotion)
+    const word ours("imposedMotion");
+    const word theirs("ImposedMotion");
+
+    const bool haveOurs = modelDict.found(ours, keyType::LITERAL);
+    const bool haveTheirs = modelDict.found(theirs, keyType::LITERAL);
+
+    if (haveOurs && haveTheirs)
+    {
+        FatalIOErrorInFunction(modelDict)
+            << "Both '" << ours << "' and '" << theirs << "' are present:"
+            << " give the prescribed motions in one of them (" << theirs
+            << " is the paper authors' spelling of " << ours << ")" << nl
+            << exit(FatalIOError);
+    }
+
+    return haveOurs ? ours : haveTheirs ? theirs : word::null;
+}
+
+
 void Foam::imposedMotionList::readMotions
 (
     const dictionary& motionsDict,
@@ -184,9 +207,9 @@ Foam::imposedMotionList::imposedMotionList
     motionI_(),
     localI_()
 {
-    const word key("imposedMotion");
+    const word key(findKey(modelDict));
 
-    if (!modelDict.found(key, keyType::LITERAL))
+    if (key.empty())
     {
         return;     // no prescribed joint
     }

@@ -42,6 +42,7 @@ Foam::imposedMotions::wangParametrization::motionTypeNames
 ({
     { motionType::standard, "standard" },
     { motionType::midStart, "midStart" },
+    { motionType::midStart2Wings, "midStart_2wings" },
 });
 
 
@@ -53,14 +54,21 @@ Foam::labelList Foam::imposedMotions::wangParametrization::readJointList
 )
 {
     const labelList joints(dict.get<labelList>("jointList"));
+    const motionType type = readMotionType(dict);
+    const label nJoints = type == motionType::midStart2Wings ? 4 : 2;
 
-    if (joints.size() != 2)
+    if (joints.size() != nJoints)
     {
         FatalIOErrorInFunction(dict)
             << "Entry 'jointList' has " << joints.size()
-            << " entries: it must have exactly 2 (flapping joint,"
-            << " pitching joint)" << nl
-            << exit(FatalIOError);
+            << " entries: motionType " << motionTypeNames[type]
+            << " needs exactly " << nJoints
+            << (
+                   nJoints == 2
+                 ? " (flapping joint, pitching joint)"
+                 : " (flapping 1, pitching 1, flapping 2, pitching 2)"
+               )
+            << nl << exit(FatalIOError);
     }
 
     return joints;
@@ -90,13 +98,31 @@ Foam::imposedMotions::wangParametrization::readMotionType
             allowed << ' ' << n;
         }
 
+        // The authors' controllers: midStartControl_z_PD, ..._xzth_PD, ...
+        const bool controller = name.starts_with("midStartControl");
+
         FatalIOErrorInFunction(dict)
             << "Entry 'motionType' = " << name
-            << " is not a valid motion type: allowed" << allowed.str().c_str()
+            << (
+                   controller
+                 ? " (a flight controller of the paper authors' code)"
+                   " is not supported by flapFoam"
+                 : " is not a valid motion type"
+               )
+            << ": allowed" << allowed.str().c_str()
             << nl << exit(FatalIOError);
     }
 
     return motionTypeNames.get(name);
+}
+
+
+Foam::scalar Foam::imposedMotions::wangParametrization::amplitudeSign
+(
+    const motionType type
+)
+{
+    return type == motionType::standard ? 1 : -1;
 }
 
 
@@ -112,11 +138,15 @@ Foam::imposedMotions::wangParametrization::readPhi
     const scalar K = dict.get<scalar>("Kphi");
     wangWaveform::checkK(dict, "Kphi", wangWaveform::shape::flapping, K);
 
-    // standard: cos(theta); midStart: sin(theta) = cos(theta - pi/2)
+    // standard: A asin(K cos(theta))/asin(K);
+    // midStart: -A asin(K sin(theta))/asin(K), sin = cos(theta - pi/2)
     const scalar phase =
-        type == motionType::midStart ? -constant::mathematical::piByTwo : 0;
+        type == motionType::standard ? 0 : -constant::mathematical::piByTwo;
 
-    return wangWaveform(wangWaveform::shape::flapping, A, f, K, phase);
+    return wangWaveform
+    (
+        wangWaveform::shape::flapping, amplitudeSign(type)*A, f, K, phase
+    );
 }
 
 
@@ -132,11 +162,21 @@ Foam::imposedMotions::wangParametrization::readAlpha
     const scalar K = dict.get<scalar>("Kalpha");
     wangWaveform::checkK(dict, "Kalpha", wangWaveform::shape::pitching, K);
 
-    // standard: sin(theta); midStart: cos(theta) = sin(theta + pi/2)
-    const scalar phase =
-        type == motionType::midStart ? constant::mathematical::piByTwo : 0;
+    // standard: A tanh(K sin(theta))/tanh(K);
+    // midStart: A - A tanh(K cos(theta))/tanh(K), cos = sin(theta + pi/2)
+    const bool standard = type == motionType::standard;
+    const scalar phase = standard ? 0 : constant::mathematical::piByTwo;
+    const scalar offset = standard ? 0 : A;
 
-    return wangWaveform(wangWaveform::shape::pitching, A, f, K, phase);
+    return wangWaveform
+    (
+        wangWaveform::shape::pitching,
+        amplitudeSign(type)*A,
+        f,
+        K,
+        phase,
+        offset
+    );
 }
 
 
@@ -166,13 +206,21 @@ void Foam::imposedMotions::wangParametrization::evaluate
     scalar& qDdot
 ) const
 {
-    if (i == 0)
+    if (i % 2)
     {
-        phi_.evaluate(t, q, qDot, qDdot);
+        alpha_.evaluate(t, q, qDot, qDdot);
     }
     else
     {
-        alpha_.evaluate(t, q, qDot, qDdot);
+        phi_.evaluate(t, q, qDot, qDdot);
+    }
+
+    // midStart_2wings: the second wing flaps mirrored (the authors' -phi)
+    if (i == 2)
+    {
+        q = -q;
+        qDot = -qDot;
+        qDdot = -qDdot;
     }
 }
 
@@ -182,10 +230,12 @@ void Foam::imposedMotions::wangParametrization::write(Ostream& os) const
     imposedMotion::write(os);
 
     os.writeEntry("motionType", motionTypeNames[motionType_]);
-    os.writeEntry("Aphi", phi_.amplitude());
+    const scalar sign = amplitudeSign(motionType_);
+
+    os.writeEntry("Aphi", sign*phi_.amplitude());
     os.writeEntry("fphi", phi_.frequency());
     os.writeEntry("Kphi", phi_.K());
-    os.writeEntry("Aalpha", alpha_.amplitude());
+    os.writeEntry("Aalpha", sign*alpha_.amplitude());
     os.writeEntry("falpha", alpha_.frequency());
     os.writeEntry("Kalpha", alpha_.K());
 }
