@@ -38,6 +38,11 @@ Description
     constant/polyMesh/points.  The motion solver (eABAMeshMotion) moves the
     mesh from points0 from then on.
 
+    Stops before it reads the case at a number beyond the range of a
+    double in system/controlDict or constant/dynamicMeshDict, or deltaT or
+    writeInterval <= 0 (runInputCheck: the stock readers would end in a
+    floating-point exception).
+
 Usage
     \b eABAInitialMesh [-case DIR]
 
@@ -48,6 +53,7 @@ Usage
 #include "fvMesh.H"
 #include "pointIOField.H"
 #include "eABAMeshMotion.H"
+#include "runInputCheck.H"
 
 using namespace Foam;
 
@@ -64,6 +70,10 @@ int main(int argc, char *argv[])
     argList::noFunctionObjects();
 
     #include "setRootCase.H"
+
+    // What the stock readers do not survive, before they read
+    runInputCheck::check(args, wordList({"constant/dynamicMeshDict"}));
+
     #include "createTime.H"
 
     fvMesh mesh

@@ -35,6 +35,12 @@ Description
     without donors turn into holes and the fringe walk of the stencil
     carries the holes through a zone (a "hole cascade").
 
+    Stops before it reads the case (FatalError naming the option, the value
+    and the range) at a bad option value, at a number beyond the range of a
+    double in system/controlDict or constant/dynamicMeshDict, at deltaT or
+    writeInterval <= 0 (runInputCheck), and before the first step when the
+    motion takes the flow's load (eABAMeshMotion with fluidLoad on).
+
     Fails (exit 1) at the first step where a zone's holes exceed
     -maxHoleFraction of its cells (default 0.25) or an interpolated cell
     has no donor; the last line says which.  Writes the mesh and cellTypes
@@ -62,6 +68,9 @@ Usage
 #include "dynamicFvMesh.H"
 #include "cellCellStencilObject.H"
 #include "oversetCouplings.H"
+#include "runInputCheck.H"
+#include "MinMax.H"
+#include "Switch.H"
 
 using namespace Foam;
 
@@ -78,19 +87,85 @@ void sumOverRanks(labelList& counts)
 }
 
 
-// The option -maxHoleFraction, checked: in (0, 1]
-scalar readMaxHoleFraction(const argList& args)
+// The value of an option (the default if not given), checked: a number
+// (scalar, label) in range, else FatalError naming the option, the value
+// and what is allowed
+template<class Type>
+Type readOption
+(
+    const argList& args,
+    const word& option,
+    const Type& deflt,
+    const MinMax<Type>& range,
+    const char* allowed
+)
 {
-    const scalar maxHoleFraction =
-        args.getOrDefault<scalar>("maxHoleFraction", 0.25);
-    if (maxHoleFraction <= 0 || maxHoleFraction > 1)
+    Type value = deflt;
+    if
+    (
+        args.found(option)
+     && (!runInputCheck::read(args[option], value) || !range.contains(value))
+    )
     {
         FatalErrorInFunction
-            << "-maxHoleFraction " << maxHoleFraction
-            << ": a fraction in (0, 1] is allowed" << exit(FatalError);
+            << "-" << option << " '" << args[option].c_str() << "': "
+            << allowed << " is allowed (default " << deflt << ")"
+            << exit(FatalError);
     }
 
-    return maxHoleFraction;
+    return value;
+}
+
+
+// A motion that takes the flow's load cannot be moved without a flow:
+// FatalIOError for eABAMeshMotion with the patch load (fields p, U) in
+// constant/dynamicMeshDict (its top level, or each entry of solvers)
+void checkNoFlowLoad(const Time& runTime)
+{
+    const IOdictionary meshDict
+    (
+        IOobject
+        (
+            "dynamicMeshDict",
+            runTime.constant(),
+            runTime,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    DynamicList<const dictionary*> solverDicts(1, &meshDict);
+    if (meshDict.isDict("solvers"))
+    {
+        solverDicts.clear();
+        for (const entry& e : meshDict.subDict("solvers"))
+        {
+            if (e.isDict())
+            {
+                solverDicts.append(&e.dict());
+            }
+        }
+    }
+
+    for (const dictionary* d : solverDicts)
+    {
+        const word solver(d->getOrDefault<word>("motionSolver", word::null));
+        const dictionary& coeffs = d->optionalSubDict(solver + "Coeffs");
+        if
+        (
+            solver == "eABAMeshMotion"
+         && coeffs.getOrDefault<Switch>("fluidLoad", true)
+         && coeffs.getOrDefault<word>("bodyLoad", "patchLoad") == "patchLoad"
+        )
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "fluidLoad on: the bodies take the flow's load (fields p"
+                << " and U), and oversetMotionCheck solves no flow.  Set"
+                << " fluidLoad off in " << coeffs.dictName() << " for this"
+                << " check (the drone cases: Allrun -motionOnly does it)"
+                << exit(FatalIOError);
+        }
+    }
 }
 
 
@@ -230,10 +305,24 @@ int main(int argc, char *argv[])
         "with -couplings: keep every K-th step's stencil whole (default 10)"
     );
     #include "setRootCase.H"
-    #include "createTime.H"
-    #include "createDynamicFvMesh.H"
 
-    const scalar maxHoleFraction = readMaxHoleFraction(args);
+    // The options and the input the stock readers do not survive, before
+    // they read
+    const scalar maxHoleFraction = readOption<scalar>
+    (
+        args, "maxHoleFraction", 0.25, scalarMinMax(VSMALL, 1),
+        "a fraction in (0, 1]"
+    );
+    const label sampleEvery = readOption<label>
+    (
+        args, "sampleEvery", 10, labelMinMax(1, labelMax),
+        "an integer >= 1"
+    );
+    runInputCheck::check(args, wordList({"constant/dynamicMeshDict"}));
+
+    #include "createTime.H"
+    checkNoFlowLoad(runTime);
+    #include "createDynamicFvMesh.H"
 
     const labelIOList& zoneID = cellCellStencil::zoneID(mesh);
     const label nZones = returnReduce(max(zoneID) + 1, maxOp<label>());
@@ -246,10 +335,7 @@ int main(int argc, char *argv[])
     {
         couplings.reset
         (
-            new oversetCouplings
-            (
-                mesh, args.getOrDefault<label>("sampleEvery", 10)
-            )
+            new oversetCouplings(mesh, sampleEvery)
         );
     }
     labelList maxHoles(nZones, Zero);

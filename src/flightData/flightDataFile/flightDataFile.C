@@ -69,14 +69,16 @@ public:
 };
 
 
-//- FatalError naming the file and what failed if status < 0
+//- FatalIOError naming the file and what failed if status < 0 (an IO
+//- error: a function object's constructor that raises it stops the run,
+//- where v1912's functionObjectList turns a FatalError into a warning)
 void check(const long status, const fileName& path, const std::string& what)
 {
     if (status < 0)
     {
-        FatalErrorInFunction
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, path)
             << "HDF5: " << what.c_str() << " failed for " << path
-            << exit(FatalError);
+            << exit(FatalIOError);
     }
 }
 
@@ -266,7 +268,81 @@ scalarList readTimes(const hid_t file, const fileName& path)
     return times;
 }
 
+
+//- The rows of a dataset (-1 if it cannot be opened)
+label datasetRows(const hid_t file, const word& name)
+{
+    handle ds(H5Dopen(file, name.c_str(), H5P_DEFAULT), H5Dclose);
+    if (ds < 0)
+    {
+        return -1;
+    }
+    handle space(H5Dget_space(ds), H5Sclose);
+    hsize_t dims[2] = {0, 0};
+    return
+        space >= 0 && H5Sget_simple_extent_dims(space, dims, nullptr) >= 0
+      ? label(dims[0])
+      : -1;
+}
+
 } // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * * //
+
+Foam::string Foam::flightDataFile::damage(const fileName& path)
+{
+    H5Eset_auto(H5E_DEFAULT, nullptr, nullptr);
+    handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+    if (file < 0)
+    {
+        return "not a readable HDF5 file (truncated or corrupt)";
+    }
+
+    DynamicList<word> datasets;
+    if
+    (
+        H5Ovisit
+        (
+            file, H5_INDEX_NAME, H5_ITER_INC, collectDatasets, &datasets
+        ) < 0
+    )
+    {
+        return "its datasets cannot be listed";
+    }
+
+    // Every dataset has as many rows as time
+    const label nTimes = datasets.found("time") ? datasetRows(file, "time") : 0;
+    for (const word& name : datasets)
+    {
+        const label n = datasetRows(file, name);
+        if (n != nTimes)
+        {
+            return
+                "dataset " + name + " has " + Foam::name(n) + " rows, time "
+              + Foam::name(nTimes);
+        }
+    }
+    if (nTimes > 0)
+    {
+        // The times themselves are readable
+        scalarList times(nTimes);
+        handle ds(H5Dopen(file, "time", H5P_DEFAULT), H5Dclose);
+        if
+        (
+            H5Dread
+            (
+                ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
+                times.data()
+            ) < 0
+        )
+        {
+            return "its dataset time cannot be read";
+        }
+    }
+
+    return string();
+}
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -323,7 +399,14 @@ Foam::flightDataFile::flightDataFile
     }
     else
     {
-        mkDir(path_.path());
+        if (!mkDir(path_.path()))
+        {
+            FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, path_.path())
+                << "Cannot create the folder " << path_.path()
+                << " of the flight data (a file of that name in the way,"
+                << " or no permission): move it away or make it writable"
+                << exit(FatalIOError);
+        }
         handle file
         (
             H5Fcreate(path_.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, H5P_DEFAULT),

@@ -23,6 +23,7 @@ License
 #include "flightDataFunctionObject.H"
 #include "fvMesh.H"
 #include "stepTimers.H"
+#include "functionObjectKeys.H"
 #include "addToRunTimeSelectionTable.H"
 #include "IOdictionary.H"
 #include "OSspecific.H"
@@ -195,6 +196,41 @@ Foam::fileName Foam::functionObjects::flightData::filePath() const
         }
     }
     return bestPath.size() ? bestPath : base/time_.timeName()/fileNameH5;
+}
+
+
+Foam::fileName Foam::functionObjects::flightData::keepAside
+(
+    const fileName& path,
+    const string& damage
+) const
+{
+    fileName aside(path + ".damaged");
+    for (label i = 1; exists(aside); ++i)
+    {
+        aside = path + ".damaged" + Foam::name(i);
+    }
+    if (!mv(path, aside))
+    {
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, path)
+            << path << " is damaged (" << damage.c_str() << ") and cannot"
+            << " be renamed to " << aside << ": move it away"
+            << exit(FatalIOError);
+    }
+
+    const fileName fresh
+    (
+        time_.globalPath()/functionObject::outputPrefix/folderName
+       /time_.timeName()/fileNameH5
+    );
+    WarningInFunction
+        << type() << " " << name() << ": " << path << " is damaged ("
+        << damage.c_str() << "): kept as " << aside << "; the flight data"
+        << " of this start go to a new file " << fresh
+        << " (the rows before time " << time_.timeName()
+        << " are only in the damaged file)" << endl;
+
+    return fresh;
 }
 
 
@@ -451,6 +487,10 @@ void Foam::functionObjects::flightData::readCoefficients
                 << " needs one" << exit(FatalIOError);
         }
         const dictionary& bd = coeffs.subDict(body);
+        functionObjectKeys::checkOnly
+        (
+            bd, wordList({"area", "chord", "momentAbout"})
+        );
         bodyIDs_[i] = model.bodyID(body);
         area_[i] = bd.get<scalar>("area");
         chord_[i] = bd.get<scalar>("chord");
@@ -502,7 +542,15 @@ Foam::functionObjects::flightData::flightData
 
     if (Pstream::master())
     {
-        const fileName path(filePath());
+        fileName path(filePath());
+        const string damage
+        (
+            isFile(path) ? flightDataFile::damage(path) : string()
+        );
+        if (damage.size())
+        {
+            path = keepAside(path, damage);
+        }
         file_.reset(new flightDataFile(path, startTime));
 
         Info<< type() << " " << this->name() << ": " << path << " ("
@@ -544,6 +592,11 @@ Foam::functionObjects::flightData::flightData
 bool Foam::functionObjects::flightData::read(const dictionary& dict)
 {
     fvMeshFunctionObject::read(dict);
+    functionObjectKeys::check
+    (
+        dict,
+        wordList({"rhoInf", "Uref", "coefficients", "attributes", "tables"})
+    );
 
     rhoInf_ = dict.get<scalar>("rhoInf");
     Uref_ = dict.get<scalar>("Uref");
