@@ -164,7 +164,12 @@ TEST(eABAMotion, RestartFromWrittenDictionary)
     dictionary stateDict;
     motion.state().write(stateDict);
 
-    RBD::eABAMotion restarted(runTime(), modelDict, stateDict);
+    // The run restarts at the time of the state
+    scratchTime restartTime("flapFoamTest-rigidBodyDynamics", 1, dt);
+    restartTime().setTime(20*dt, 20);
+
+    RBD::eABAMotion restarted(restartTime(), modelDict, stateDict);
+    EXPECT_FALSE(restarted.freshStart());
 
     EXPECT_EQ(restarted.nDoF(), motion.nDoF());
     EXPECT_EQ(restarted.prescribed(), motion.prescribed());

@@ -21,6 +21,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "eABAModel.H"
+#include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -30,6 +31,99 @@ namespace RBD
 {
     defineTypeNameAndDebug(eABAModel, 0);
 }
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// Eigenvalues of a symmetric tensor, ascending (the closed form of Smith
+// 1961; OpenFOAM's eigenValues warns of complex values for a multiple one)
+Foam::vector principalMoments(const Foam::symmTensor& A)
+{
+    using namespace Foam;
+
+    const scalar p1 = sqr(A.xy()) + sqr(A.xz()) + sqr(A.yz());
+    if (p1 == 0)
+    {
+        const vector d(A.xx(), A.yy(), A.zz());
+        const scalar lo = cmptMin(d);
+        const scalar hi = cmptMax(d);
+        return vector(lo, cmptSum(d) - lo - hi, hi);
+    }
+
+    const scalar q = tr(A)/3;
+    const scalar p =
+        Foam::sqrt((sqr(A.xx() - q) + sqr(A.yy() - q) + sqr(A.zz() - q) + 2*p1)/6);
+    const scalar r = det((A - q*symmTensor::I)/p)/2;
+    const scalar phi = Foam::acos(max(scalar(-1), min(scalar(1), r)))/3;
+
+    const scalar hi = q + 2*p*Foam::cos(phi);
+    const scalar lo = q + 2*p*Foam::cos(phi + constant::mathematical::twoPi/3);
+    return vector(lo, 3*q - hi - lo, hi);
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::RBD::eABAModel::checkBodies() const
+{
+    for (const entry& e : bodiesDict_)
+    {
+        if (!e.isDict())
+        {
+            continue;
+        }
+        const dictionary& dict = e.dict();
+
+        const scalar m = dict.getOrDefault<scalar>("mass", 0);
+        if (!(m >= 0))
+        {
+            FatalIOErrorInFunction(dict)
+                << "body " << e.keyword() << ": mass " << m
+                << ": must be >= 0 (0: no mass)" << exit(FatalIOError);
+        }
+
+        if (!dict.found("inertia"))
+        {
+            continue;
+        }
+
+        // Principal moments, ascending
+        const symmTensor J(dict.get<symmTensor>("inertia"));
+        const vector ev(principalMoments(J));
+        const scalar tol = 1e-12*cmptMax(cmptMag(ev));
+
+        if (cmptMin(ev) < -tol || ev.x() + ev.y() < ev.z() - tol)
+        {
+            FatalIOErrorInFunction(dict)
+                << "body " << e.keyword() << ": inertia " << J
+                << " has principal moments " << ev << ": the inertia about"
+                << " the centre of mass must be symmetric positive"
+                << " semi-definite (principal moments >= 0) with each"
+                << " principal moment at most the sum of the other two"
+                << " (triangle inequality)" << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::RBD::eABAModel::singularJoint(const label i, const scalar D) const
+{
+    const joint& jnt = joints()[i];
+    const dictionary* dictPtr = bodiesDict_.findDict(name(i));
+
+    FatalIOErrorInFunction(dictPtr ? *dictPtr : bodiesDict_)
+        << "the free joint " << jnt.type() << " (q index " << jnt.qIndex()
+        << ") of body " << name(i) << " moves no inertia (S^T IA S = " << D
+        << "): its acceleration is undefined, e.g. a leaf body of mass 0 or"
+        << " a point mass on the joint's rotation axis.  Allowed: a body (or"
+        << " subtree) with mass or inertia along the joint's motion, or the"
+        << " joint prescribed (imposedMotion)" << exit(FatalIOError);
 }
 
 
@@ -45,8 +139,11 @@ Foam::RBD::eABAModel::eABAModel(const Time& time)
 Foam::RBD::eABAModel::eABAModel(const Time& time, const dictionary& dict)
 :
     rigidBodyModel(time, dict),
-    prescribedI_(nBodies(), -1)
-{}
+    prescribedI_(nBodies(), -1),
+    bodiesDict_(dict.subDict("bodies"))
+{
+    checkBodies();
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

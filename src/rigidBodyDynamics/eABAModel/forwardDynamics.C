@@ -30,6 +30,26 @@ Description
 
 #include "eABAModel.H"
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// Sum of the diagonal magnitudes of an articulated inertia: the scale of a
+// pivot S^T IA S
+inline Foam::scalar inertiaScale(const Foam::spatialTensor& IA)
+{
+    Foam::scalar s = 0;
+    for (Foam::direction d = 0; d < 6; ++d)
+    {
+        s += Foam::mag(IA(d, d));
+    }
+    return s;
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::RBD::eABAModel::forwardPass1
@@ -99,7 +119,12 @@ void Foam::RBD::eABAModel::backwardPass
         else if (jnt.nDoF() == 1)
         {
             U1_[i] = IA_[i] & S1_[i];
-            Dinv_[i].xx() = 1/(S1_[i] && U1_[i]);
+            const scalar D = S1_[i] && U1_[i];
+            if (!(D > SMALL*inertiaScale(IA_[i])))
+            {
+                singularJoint(i, D);
+            }
+            Dinv_[i].xx() = 1/D;
             u_[i].x() = tau[qi] - (S1_[i] && pA_[i]);
 
             if (p == 0) continue;
@@ -110,7 +135,12 @@ void Foam::RBD::eABAModel::backwardPass
         else
         {
             U_[i] = IA_[i] & S_[i];
-            Dinv_[i] = (S_[i].T() & U_[i]).inv();
+            const tensor D(S_[i].T() & U_[i]);
+            if (!(det(D) > SMALL*pow3(inertiaScale(IA_[i]))))
+            {
+                singularJoint(i, det(D));
+            }
+            Dinv_[i] = D.inv();
             u_[i] = tau.block<vector>(qi) - (S_[i].T() & pA_[i]);
 
             if (p == 0) continue;

@@ -24,6 +24,7 @@ License
 #include "eABASolver.H"
 #include "Time.H"
 #include "IOdictionary.H"
+#include "StringStream.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -85,6 +86,82 @@ void Foam::RBD::eABAMotion::initialise()
 }
 
 
+bool Foam::RBD::eABAMotion::isRestart(const dictionary& stateDict) const
+{
+    const scalar deltaT = stateDict.getOrDefault<scalar>("deltaT", 0);
+    const scalar t = stateDict.getOrDefault<scalar>("t", -GREAT);
+
+    return deltaT > 0 && mag(t - time().value()) <= 0.5*deltaT;
+}
+
+
+void Foam::RBD::eABAMotion::startAfresh(const dictionary& stateDict)
+{
+    motionState_.t() = time().value();
+    motionState_.deltaT() = 0;
+
+    const scalarField tau(nDoF(), Zero);
+    const Field<spatialVector> fx(nBodies(), Zero);
+    evaluate(motionState_, tau, fx);
+
+    motionState0_ = motionState_;
+
+    reportChanges(stateDict);
+}
+
+
+void Foam::RBD::eABAMotion::reportChanges(const dictionary& stateDict) const
+{
+    // Free joints keep the file's q and qDot: only qDdot can change
+    const wordList names({"q", "qDot", "qDdot"});
+    const scalarField* values[] =
+        {&motionState_.q(), &motionState_.qDot(), &motionState_.qDdot()};
+
+    // Names of the bodies of the q indices
+    labelList qBody(nDoF(), -1);
+    for (label i = 1; i < nBodies(); ++i)
+    {
+        for (label k = 0; k < joints()[i].nDoF(); ++k)
+        {
+            qBody[joints()[i].qIndex() + k] = i;
+        }
+    }
+
+    OStringStream changes;
+    forAll(names, ni)
+    {
+        if (!stateDict.found(names[ni]))
+        {
+            continue;
+        }
+
+        const scalarField given(stateDict.get<scalarField>(names[ni]));
+        const scalarField& value = *values[ni];
+
+        forAll(value, qi)
+        {
+            if (mag(value[qi] - given[qi]) > 1e-10*(1 + mag(given[qi])))
+            {
+                changes
+                    << nl << "    " << names[ni] << '[' << qi << "] (body "
+                    << name(qBody[qi]) << "): " << given[qi] << " -> "
+                    << value[qi];
+            }
+        }
+    }
+
+    if (!changes.str().empty())
+    {
+        Info<< "Fresh start at t = " << time().timeName() << ": "
+            << stateDict.name() << " was not written by a step of this run"
+            << " (deltaT > 0, t = the current time), so the prescribed"
+            << " joints follow their motions and the free joints'"
+            << " accelerations come from the dynamics (gravity, restraints)."
+            << " Values changed:" << changes.str().c_str() << nl << endl;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::RBD::eABAMotion::eABAMotion(const Time& time, const dictionary& dict)
@@ -108,12 +185,18 @@ Foam::RBD::eABAMotion::eABAMotion
     aRelax_(1),
     aDamp_(1),
     report_(false),
+    freshStart_(!isRestart(stateDict)),
     solver_(nullptr),
     qDdotPrev_(nDoF(), Zero)
 {
     readCoeffs(dict);
     solver_ = eABASolver::New(*this, dict.subDict("solver"));
     initialise();
+
+    if (freshStart_)
+    {
+        startAfresh(stateDict);
+    }
 }
 
 
@@ -124,6 +207,38 @@ Foam::RBD::eABAMotion::~eABAMotion()
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+const Foam::wordList& Foam::RBD::eABAMotion::keys()
+{
+    // ImposedMotion: the paper authors' spelling, read by imposedMotionList
+    static const wordList modelKeys
+    ({
+        "solver", "nIter", "accelerationRelaxation", "accelerationDamping",
+        "report", "g", "bodies", "restraints", "imposedMotion",
+        "ImposedMotion"
+    });
+
+    return modelKeys;
+}
+
+
+void Foam::RBD::eABAMotion::checkKeys
+(
+    const dictionary& dict,
+    const wordList& allowed
+)
+{
+    for (const entry& e : dict)
+    {
+        if (!allowed.found(e.keyword()))
+        {
+            FatalIOErrorInFunction(dict)
+                << "unknown entry '" << e.keyword() << "' in " << dict.name()
+                << ": allowed keys are " << allowed << exit(FatalIOError);
+        }
+    }
+}
+
 
 Foam::spatialTransform Foam::RBD::eABAMotion::X00(const label bodyID) const
 {
