@@ -32,12 +32,15 @@ Description
     checked quickly.
 
     Reads
-      - constant/dynamicMeshDict: the multibody dictionary (solver, nIter,
-        accelerationRelaxation, accelerationDamping, g, bodies, restraints,
-        imposedMotion: see eABAMotion) at the top level or, for a case of
-        the overset motion solver, in its eABAMeshMotionCoeffs;
+      - constant/dynamicMeshDict (or -dict FILE): the multibody dictionary
+        (solver, nIter, accelerationRelaxation, accelerationDamping, g,
+        bodies, restraints, imposedMotion: see eABAMotion) at the top level,
+        in eABAMeshMotionCoeffs (flapFoam's overset motion solver) or in a
+        sub-dictionary of solvers (the paper authors' layout; -solver NAME
+        chooses if several have bodies): see multibodyDict;
       - system/controlDict: startTime, endTime, deltaT, writeControl and
-        writeInterval;
+        writeInterval (deltaT and writeInterval > 0, endTime not before the
+        start time: FatalIOError otherwise);
       - <startTime>/uniform/rigidBodyMotionState when present: the initial
         q, qDot (and qDdot) lists; zero otherwise.  Without qDdot the
         initial accelerations are computed from the state.
@@ -52,7 +55,7 @@ Description
       - <endTime>/uniform/rigidBodyMotionState: the state to restart from.
 
 Usage
-    \b rigidBodySimulate [-case DIR]
+    \b rigidBodySimulate [-case DIR] [-dict FILE] [-solver NAME]
 
 \*---------------------------------------------------------------------------*/
 
@@ -60,7 +63,9 @@ Usage
 #include "Time.H"
 #include "IOdictionary.H"
 #include "OFstream.H"
+#include "IFstream.H"
 #include "eABAMotion.H"
+#include "multibodyDict.H"
 
 using namespace Foam;
 
@@ -68,6 +73,52 @@ using namespace Foam;
 
 namespace
 {
+
+// Before Time reads system/controlDict (writeInterval 0 is a sigFpe there,
+// deltaT 0 an endless loop here): deltaT and writeInterval must be > 0
+void checkControlDict(const argList& args)
+{
+    const fileName file(args.path()/"system"/"controlDict");
+
+    if (!isFile(file))
+    {
+        return;     // Time says so
+    }
+
+    IFstream is(file);
+    const dictionary dict(is);
+
+    for (const word key : {"deltaT", "writeInterval"})
+    {
+        const scalar value = dict.get<scalar>(key);
+
+        if (!(value > 0))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry '" << key << "' = " << value << " in " << file
+                << " is out of range: allowed " << key << " > 0" << nl
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+// endTime not before the start time (startTime or the latest time)
+void checkEndTime(const Time& runTime)
+{
+    const scalar endTime = runTime.endTime().value();
+
+    if (endTime < runTime.value() - 0.5*runTime.deltaTValue())
+    {
+        FatalIOErrorInFunction(runTime.controlDict())
+            << "Entry 'endTime' = " << endTime << " in "
+            << runTime.controlDict().name()
+            << " is before the start time " << runTime.timeName()
+            << ": allowed endTime >= " << runTime.timeName() << nl
+            << exit(FatalIOError);
+    }
+}
+
 
 // Initial state: <startTime>/uniform/rigidBodyMotionState if present (zero
 // otherwise), reported to the log
@@ -186,25 +237,18 @@ int main(int argc, char *argv[])
         " gravity and restraints only."
     );
     argList::noParallel();
+    multibodyDict::addOptions();
 
     #include "setRootCase.H"
+
+    checkControlDict(args);
+
     #include "createTime.H"
 
-    const IOdictionary dynamicMeshDict
-    (
-        IOobject
-        (
-            "dynamicMeshDict",
-            runTime.constant(),
-            runTime,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE,
-            false
-        )
-    );
+    checkEndTime(runTime);
 
-    const dictionary& modelDict =
-        dynamicMeshDict.optionalSubDict("eABAMeshMotionCoeffs");
+    const multibodyDict multibody(runTime, args);
+    const dictionary& modelDict = multibody.dict();
 
     const dictionary stateDict(readInitialState(runTime));
 
