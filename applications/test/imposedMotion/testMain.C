@@ -32,9 +32,13 @@ Description
         cyclic tridiagonal solver against its residual;
       - write() then read back gives the same motion (every type, the list);
       - every bad input stops with a FatalIOError whose message names the
-        key (FatalError and FatalIOError are made to throw);
+        key (FatalError and FatalIOError are made to throw), an unknown key
+        (e.g. a misspelled optional one) listing the allowed keys;
+      - wangParametrization midStart: the paper authors' q(t) (their
+        formulas and their dictionary's numbers), exact derivatives;
       - imposedMotionList: joints ascending, evaluate writes only the
-        prescribed entries, empty without the sub-dictionary.
+        prescribed entries, empty without the sub-dictionary, the authors'
+        spelling ImposedMotion (both spellings: FatalIOError).
 
 \*---------------------------------------------------------------------------*/
 

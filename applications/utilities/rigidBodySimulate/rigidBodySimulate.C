@@ -90,7 +90,8 @@ void checkControlDict(const argList& args)
 
     for (const word key : {"deltaT", "writeInterval"})
     {
-        const scalar value = dict.get<scalar>(key);
+        // Missing: Time says so
+        const scalar value = dict.getOrDefault<scalar>(key, 1);
 
         if (!(value > 0))
         {
