@@ -70,7 +70,7 @@ Foam::IOobject Foam::multibodyDict::dictIO
     {
         FatalErrorInFunction
             << (file.empty() ? "" : "Option -dict " + file + ": ")
-            << "no file " << io.objectPath() << nl
+            << "no file " << io.objectPath().c_str() << nl
             << "    allowed: a dictionary file (absolute, ./ or ../ from the"
             << " working directory, else relative to the case)" << nl
             << exit(FatalError);
@@ -126,7 +126,8 @@ void Foam::multibodyDict::selectSolver(const word& name)
     if (!solverPtr)
     {
         FatalIOErrorInFunction(meshDict_)
-            << "Option -solver " << name << ": " << meshDict_.name()
+            << "Option -solver " << name << ": "
+            << meshDict_.objectPath().c_str()
             << " has no sub-dictionary solvers/" << name
             << " with a multibody model ('bodies'): allowed"
             << (names.empty() ? " none" : listed(names).c_str()) << nl
@@ -160,13 +161,15 @@ void Foam::multibodyDict::findModel()
         return;
     }
 
+    const fileName file(meshDict_.objectPath());
+
     FatalIOErrorInFunction(meshDict_)
         << (
                names.empty()
-             ? "No multibody model ('bodies') in " + meshDict_.name()
+             ? "No multibody model ('bodies') in " + file
              + ": looked at the top level, in " + coeffsName
              + " and in the sub-dictionaries of solvers"
-             : "Several multibody models in solvers of " + meshDict_.name()
+             : "Several multibody models in solvers of " + file
              + ":" + listed(names) + "; choose one with -solver NAME"
            ).c_str()
         << nl << exit(FatalIOError);
