@@ -61,6 +61,17 @@ void Foam::imposedMotion::checkKeys() const
     allowed.append(jointsKey());
     const wordList ignored(ignoredKeys());
 
+    // " a b c"
+    const auto spaced = [](const wordList& keys, const char* suffix)
+    {
+        OStringStream os;
+        for (const word& k : keys)
+        {
+            os << ' ' << k << suffix;
+        }
+        return os.str();
+    };
+
     wordList ignoredFound;
 
     for (const entry& e : dict_)
@@ -73,20 +84,11 @@ void Foam::imposedMotion::checkKeys() const
         }
         else if (!allowed.found(key))
         {
-            OStringStream keys;
-            for (const word& k : allowed)
-            {
-                keys << ' ' << k;
-            }
-            for (const word& k : ignored)
-            {
-                keys << ' ' << k << " (ignored)";
-            }
-
             FatalIOErrorInFunction(dict_)
                 << "Unknown entry '" << key << "' in '" << name_
                 << "' (type " << type() << "): allowed keys are"
-                << keys.str().c_str() << nl
+                << spaced(allowed, "").c_str()
+                << spaced(ignored, " (ignored)").c_str() << nl
                 << exit(FatalIOError);
         }
     }
@@ -94,9 +96,9 @@ void Foam::imposedMotion::checkKeys() const
     if (ignoredFound.size())
     {
         IOWarningInFunction(dict_)
-            << "Entries " << ignoredFound << " of '" << name_
-            << "' (type " << type() << ") are keys of the paper authors'"
-            << " code that flapFoam does not use: ignored" << endl;
+            << "Entries" << spaced(ignoredFound, "").c_str() << " of '"
+            << name_ << "' (type " << type() << ") are keys of the paper"
+            << " authors' code that flapFoam does not use: ignored" << endl;
     }
 }
 
