@@ -55,8 +55,9 @@ Foam::vector principalMoments(const Foam::symmTensor& A)
     }
 
     const scalar q = tr(A)/3;
-    const scalar p =
-        Foam::sqrt((sqr(A.xx() - q) + sqr(A.yy() - q) + sqr(A.zz() - q) + 2*p1)/6);
+    const scalar p2 =
+        sqr(A.xx() - q) + sqr(A.yy() - q) + sqr(A.zz() - q) + 2*p1;
+    const scalar p = Foam::sqrt(p2/6);
     const scalar r = det((A - q*symmTensor::I)/p)/2;
     const scalar phi = Foam::acos(max(scalar(-1), min(scalar(1), r)))/3;
 

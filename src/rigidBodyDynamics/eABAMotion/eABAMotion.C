@@ -153,11 +153,12 @@ void Foam::RBD::eABAMotion::reportChanges(const dictionary& stateDict) const
     if (!changes.str().empty())
     {
         Info<< "Fresh start at t = " << time().timeName() << ": "
-            << stateDict.name() << " was not written by a step of this run"
-            << " (deltaT > 0, t = the current time), so the prescribed"
-            << " joints follow their motions and the free joints'"
-            << " accelerations come from the dynamics (gravity, restraints)."
-            << " Values changed:" << changes.str().c_str() << nl << endl;
+            << stateDict.name() << " is not a state written by a step of"
+            << " this run (with deltaT > 0 and t = the current time): the"
+            << " prescribed joints take their motions' values and the free"
+            << " joints' accelerations come from the dynamics (gravity,"
+            << " restraints).  Changed from the file:" << changes.str().c_str()
+            << nl << endl;
     }
 }
 
@@ -234,7 +235,8 @@ void Foam::RBD::eABAMotion::checkKeys
         {
             FatalIOErrorInFunction(dict)
                 << "unknown entry '" << e.keyword() << "' in " << dict.name()
-                << ": allowed keys are " << allowed << exit(FatalIOError);
+                << ": allowed keys are " << flatOutput(allowed)
+                << exit(FatalIOError);
         }
     }
 }

@@ -95,31 +95,38 @@ void Foam::eABAMeshMotion::readBodies()
             continue;
         }
 
+        if (!hasZone)
+        {
+            FatalIOErrorInFunction(bodyDict)
+                << "body " << e.keyword() << " has patches "
+                << flatOutput(bodyDict.get<wordRes>("patches"))
+                << " but no cellZone: its"
+                << " component mesh would not move with it.  Allowed:"
+                << " cellZone <zone of the body's component mesh>, one of "
+                << flatOutput(mesh().cellZones().names())
+                << exit(FatalIOError);
+        }
+
         // The patches are the load's (bodyLoad); the body is listed
         bodyMesh& bm = bodyMeshes_[nBodyMeshes++];
         bm.name = e.keyword();
         bm.bodyID = bodyLoad::treeBodyID(model_, bm.name, bodyDict);
 
-        if (hasZone)
+        bm.cellZone = bodyDict.get<word>("cellZone");
+        bm.pointIDs = zonePoints(bm.cellZone, bodyDict);
+
+        for (const label pointi : bm.pointIDs)
         {
-            bm.cellZone = bodyDict.get<word>("cellZone");
-            bm.pointIDs = zonePoints(bm.cellZone, bodyDict);
-
-            for (const label pointi : bm.pointIDs)
+            if (owned.test(pointi))
             {
-                if (owned.test(pointi))
-                {
-                    FatalIOErrorInFunction(bodyDict)
-                        << "cellZone " << bm.cellZone << " of body "
-                        << bm.name
-                        << " shares points with another moving zone:"
-                        << " component meshes must be separate"
-                        << exit(FatalIOError);
-                }
-                owned.set(pointi);
+                FatalIOErrorInFunction(bodyDict)
+                    << "cellZone " << bm.cellZone << " of body " << bm.name
+                    << " shares points with another moving zone:"
+                    << " component meshes must be separate"
+                    << exit(FatalIOError);
             }
+            owned.set(pointi);
         }
-
     }
 
     bodyMeshes_.setSize(nBodyMeshes);
@@ -134,6 +141,11 @@ void Foam::eABAMeshMotion::readBackground()
     }
 
     const dictionary& dict = coeffDict().subDict("background");
+    RBD::eABAMotion::checkKeys
+    (
+        dict,
+        wordList({"cellZone", "body", "components"})
+    );
 
     const word bodyName(dict.get<word>("body"));
     backgroundBodyID_ = model_.bodyID(bodyName);
@@ -168,6 +180,37 @@ void Foam::eABAMeshMotion::readBackground()
                 << exit(FatalIOError);
         }
     }
+}
+
+
+Foam::wordList Foam::eABAMeshMotion::meshKeys() const
+{
+    // The keys of the motion solver and of the loads (bodyLoad types:
+    // patchLoad, aerodynamics); at the top level of dynamicMeshDict also
+    // the keys of the dynamic mesh
+    wordList keys(RBD::eABAMotion::keys());
+    keys.append
+    (
+        wordList
+        ({
+            "bodyLoad", "fluidLoad", "background",
+            "rho", "rhoInf", "p", "U", "aerodynamics"
+        })
+    );
+
+    if (!found(typeName + "Coeffs"))
+    {
+        keys.append
+        (
+            wordList
+            ({
+                "dynamicFvMesh", "dynamicFvMeshLibs", "motionSolverLibs",
+                "motionSolver", "timeWait"
+            })
+        );
+    }
+
+    return keys;
 }
 
 
@@ -245,27 +288,22 @@ Foam::eABAMeshMotion::eABAMeshMotion
     tau_(model_.nDoF(), Zero),
     fx_(model_.nBodies(), Zero)
 {
+    RBD::eABAMotion::checkKeys(coeffDict(), meshKeys());
     readBodies();
     readBackground();
     load_ = bodyLoad::New(mesh, model_, coeffDict());
 
-    const bool restart =
-        RBD::eABAMotion::stateIO(mesh).typeHeaderOk<IOdictionary>(true);
-
-    // The model, its bodies and their loads for the output
+    // The model, its bodies and their loads for the output.  The model
+    // made a fresh start consistent (eABAMotion: the flow's load at the
+    // start is taken as zero, exact for uniform initial p and U); a
+    // restart keeps the stored state.
     record_.reset
     (
-        new RBD::motionRecord(mesh, model_, fx_, bodyNames(), !restart)
+        new RBD::motionRecord
+        (
+            mesh, model_, fx_, bodyNames(), model_.freshStart()
+        )
     );
-
-    // A fresh start: the exact prescribed state at the start time and
-    // consistent accelerations (gravity and restraints: the flow is at
-    // rest).  A restart keeps the stored state.
-    if (!restart)
-    {
-        model_.state().t() = mesh.time().value();
-        model_.evaluate(model_.state(), tau_, fx_);
-    }
 
     updatePoints();
 
