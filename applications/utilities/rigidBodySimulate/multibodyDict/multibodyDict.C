@@ -221,6 +221,12 @@ void Foam::multibodyDict::checkKeys() const
             << " (README: Coming from the paper's code)" << endl;
     }
 
+    reportOtherSolvers();
+}
+
+
+void Foam::multibodyDict::reportOtherSolvers() const
+{
     wordList notRun;
     const dictionary* solversPtr =
         meshDict_.findDict("solvers", keyType::LITERAL);
@@ -244,50 +250,3 @@ void Foam::multibodyDict::checkKeys() const
 }
 
 
-// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
-
-void Foam::multibodyDict::addOptions()
-{
-    argList::addOption
-    (
-        "dict",
-        "file",
-        "The dictionary with the multibody model"
-        " (default: constant/dynamicMeshDict)"
-    );
-    argList::addOption
-    (
-        "solver",
-        "name",
-        "The sub-dictionary of solvers with the multibody model (needed"
-        " when several have bodies)"
-    );
-}
-
-
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
-
-Foam::multibodyDict::multibodyDict(const Time& runTime, const argList& args)
-:
-    meshDict_(dictIO(runTime, args)),
-    location_(),
-    modelDictPtr_(nullptr)
-{
-    word name;
-    if (args.readIfPresent("solver", name))
-    {
-        selectSolver(name);
-    }
-    else
-    {
-        findModel();
-    }
-
-    Info<< "Multibody model: " << meshDict_.objectPath().c_str() << ' '
-        << (location_.empty() ? "(top level)" : location_.c_str()) << nl;
-
-    checkKeys();
-}
-
-
-// ************************************************************************* //
