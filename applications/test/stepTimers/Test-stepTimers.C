@@ -19,11 +19,8 @@ License
     You should have received a copy of the GNU General Public License
     along with flapFoam (COPYING).  If not, see <http://www.gnu.org/licenses/>.
 
-Application
-    flapFoamTest-stepTimers
-
 Description
-    GoogleTest unit tests of libflapFoamStepTimers:
+    GoogleTest unit tests of the step timers (flapFoamTest-stepTimers):
       - the registry: a scope adds its elapsed time (a 20 ms sleep gives
         0.02 s), parts stay in the order of first use, reset zeroes the
         parts and clears the stamps but keeps the names, New returns the
@@ -33,7 +30,7 @@ Description
         columns of stepTimers.dat, rbd + overset + pimple within 5 % of
         total in every step (and with preUpdate equal to it), a part first
         used later adds a header line, pimple = total without the mesh
-        update stamps, the summary file, a bad key.
+        update stamps, the summary file, a bad value, an unknown key.
 
     Sleeps are timed against loose upper bounds: the machine may be shared.
 
@@ -559,19 +556,29 @@ TEST(stepTimersFunctionObject, badNStartup)
 }
 
 
-// * * * * * * * * * * * * * * * * * * main  * * * * * * * * * * * * * * * * //
-
-int main(int argc, char* argv[])
+TEST(stepTimersFunctionObject, unknownKey)
 {
-    ::testing::InitGoogleTest(&argc, argv);
+    scratchTime runTimePtr("flapFoamTest-stepTimers", 2, 1);
 
-    // Bad input must throw (caught and checked by the tests), not exit
-    FatalError.throwExceptions();
-    FatalIOError.throwExceptions();
+    dictionary dict;
+    dict.add("nStrtup", 1);
 
-    const int result = RUN_ALL_TESTS();
-
-    return result;
+    try
+    {
+        functionObjects::stepTimers fo("stepTimers", runTimePtr(), dict);
+        ADD_FAILURE() << "nStrtup accepted";
+    }
+    catch (const Foam::IOerror& err)
+    {
+        EXPECT_NE
+        (
+            err.message().find
+            (
+                "Unknown key 'nStrtup' in ; allowed: nStartup writePrecision"
+            ),
+            std::string::npos
+        )   << err.message();
+    }
 }
 
 

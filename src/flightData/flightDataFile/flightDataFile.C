@@ -83,6 +83,34 @@ void check(const long status, const fileName& path, const std::string& what)
 }
 
 
+//- Make a folder, else FatalIOError naming it (OpenFOAM's mkDir raises a
+//- FatalError, which a function object's constructor turns into a warning)
+void makeFolder(const fileName& dir)
+{
+    const bool throwing = FatalError.throwExceptions();
+    bool made = false;
+    string why("no permission?");
+    try
+    {
+        made = mkDir(dir);
+    }
+    catch (const Foam::error& err)
+    {
+        why = err.message();
+    }
+    FatalError.throwExceptions(throwing);
+
+    if (!made)
+    {
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, dir)
+            << "Cannot create the folder " << dir.c_str() << " of the flight"
+            << " data: " << why.c_str() << nl << "Move away what is in the"
+            << " way or make it writable; the run does not start without"
+            << " its flight data" << exit(FatalIOError);
+    }
+}
+
+
 //- The paths of the datasets of a file (H5Ovisit)
 herr_t collectDatasets
 (
@@ -399,14 +427,7 @@ Foam::flightDataFile::flightDataFile
     }
     else
     {
-        if (!mkDir(path_.path()))
-        {
-            FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, path_.path())
-                << "Cannot create the folder " << path_.path()
-                << " of the flight data (a file of that name in the way,"
-                << " or no permission): move it away or make it writable"
-                << exit(FatalIOError);
-        }
+        makeFolder(path_.path());
         handle file
         (
             H5Fcreate(path_.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, H5P_DEFAULT),

@@ -24,7 +24,6 @@ License
 #include "functionObjectKeys.H"
 #include "addToRunTimeSelectionTable.H"
 #include "IOdictionary.H"
-#include "MinMax.H"
 #include "Time.H"
 
 #include <cmath>
@@ -43,6 +42,26 @@ namespace functionObjects
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::functionObjects::runProgress::positive
+(
+    const dictionary& dict,
+    const word& key,
+    const scalar deflt
+)
+{
+    const scalar value =
+        deflt > 0 ? dict.getOrDefault<scalar>(key, deflt)
+      : dict.get<scalar>(key);
+    if (!(value > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << key << " " << value << ": a positive number is allowed"
+            << exit(FatalIOError);
+    }
+    return value;
+}
+
 
 Foam::functionObjects::runProgress::mark
 Foam::functionObjects::runProgress::now() const
@@ -81,11 +100,7 @@ Foam::scalar Foam::functionObjects::runProgress::motionPeriod
             << " name one of them, or give the period instead"
             << exit(FatalIOError);
     }
-    const dictionary& motion = motions->subDict(entry);
-    const scalar f =
-        motion.getCheck<scalar>("frequency", scalarMinMax::ge(SMALL));
-
-    return 1/f;
+    return 1/positive(motions->subDict(entry), "frequency", 0);
 }
 
 
@@ -113,7 +128,7 @@ void Foam::functionObjects::runProgress::report
         os << ", cycle " << m.t/period_ << " of " << endTime/period_;
     }
     os << ", step " << m.index << "; wall ";
-    if (nLast > 0)
+    if (nLast > 0 && last_.index != start_.index)
     {
         os << wallLast/nLast << " s/step (last " << duration(wallLast)
            << ", " << nLast << " steps), ";
@@ -205,10 +220,7 @@ bool Foam::functionObjects::runProgress::read(const dictionary& dict)
         dict, wordList({"progressInterval", "period", "cycleMotion"})
     );
 
-    interval_ = dict.getCheckOrDefault<scalar>
-    (
-        "progressInterval", 300, scalarMinMax::ge(SMALL)
-    );
+    interval_ = positive(dict, "progressInterval", 300);
 
     if (dict.found("period") && dict.found("cycleMotion"))
     {
@@ -224,7 +236,7 @@ bool Foam::functionObjects::runProgress::read(const dictionary& dict)
     }
     else if (dict.found("period"))
     {
-        period_ = dict.getCheck<scalar>("period", scalarMinMax::ge(SMALL));
+        period_ = positive(dict, "period", 0);
     }
 
     Info<< type() << " " << name() << ": a line every "

@@ -21,6 +21,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "stepTimersFunctionObject.H"
+#include "functionObjectKeys.H"
 #include "addToRunTimeSelectionTable.H"
 #include "MinMax.H"
 #include "OFstream.H"
@@ -369,6 +370,11 @@ bool Foam::functionObjects::stepTimers::read(const dictionary& dict)
 {
     timeFunctionObject::read(dict);
     writeFile::read(dict);
+    functionObjectKeys::check
+    (
+        dict,
+        wordList({"nStartup", "writePrecision", "writeToFile", "useUserTime"})
+    );
 
     nStartup_ = dict.getCheckOrDefault<label>
     (
