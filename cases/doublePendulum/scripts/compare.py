@@ -31,6 +31,17 @@ Metrics (all maxima over the output rows in the window):
                  evaluated at every other row)
     free energy  max |E - E(0)| / E(0)  (E = 0 at rest hanging down)  [0, 2] s
     free theta   max over both absolute angles |theta - theta_ref|  [0, 0.5] s
+
+Initial state (``compare.py initialState``, runs of scripts/initialStateRuns):
+    atRest theta2     theta2 of runs/atRest-<integrator> (from a hand-written
+                      state file with qDdot 0: a fresh start), [0, 1] s
+    atRest same       max |row difference| of its joints.dat and that of
+                      runs/<integrator> (no state file): the same run
+    stale theta2      theta2 of runs/atRestStale (the file's qDdot kept): the
+                      first-order error a fresh start removes, must be large
+    restart           max relative difference of q, qDot, qDdot at 1 s of
+                      runs/freeRestart (restarted at 0.375 s) and of
+                      runs/freeStraight (deltaT 2^-13 s: the same times)
 """
 
 import argparse
@@ -59,6 +70,14 @@ TOL = {
 }
 
 WINDOW = {"theta2": 1.0, "tau1": 1.0, "freeTheta": 0.5}
+
+# Initial state checks: limits
+TOL_INITIAL = {
+    "atRestTheta2": 2e-6,   # rad: as without a state file (<= 1.6e-6)
+    "atRestSame": 1e-12,    # the run without a state file
+    "staleTheta2": 1e-3,    # rad, a LOWER bound: the stale error is 6.7e-3
+    "restart": 1e-12,       # relative to the straight run
+}
 
 
 # ---------------------------------------------------------------------------
@@ -279,6 +298,66 @@ def run_checks(case=CASE):
     return sum(1 for ok, _ in lines if not ok)
 
 
+def read_state(path):
+    """q, qDot, qDdot of a rigidBodyMotionState file (dict of arrays)"""
+    out = {}
+    with open(path) as f:
+        for line in f:
+            words = line.replace("(", " ( ").replace(")", " ) ").split()
+            if words and words[0] in ("q", "qDot", "qDdot") and "(" in words:
+                i = words.index("(")
+                out[words[0]] = np.array(
+                    [float(w) for w in words[i + 1:words.index(")")]])
+    return out
+
+
+def initial_state_checks(case=CASE):
+    """Print one PASS/FAIL line per initial-state check; return the number
+    of failures"""
+    nFail = 0
+
+    def check(name, ok, value, tol):
+        nonlocal nFail
+        nFail += not ok
+        print(_line(ok, name, value, tol), flush=True)
+
+    try:
+        for integrator in INTEGRATORS:
+            run = "atRest-" + integrator
+            m = prescribed_metrics(run, case)
+            check(f"{run}_theta2", m["theta2"] < TOL_INITIAL["atRestTheta2"],
+                  m["theta2"], TOL_INITIAL["atRestTheta2"])
+            a = np.loadtxt(joints_file(run, case), comments="#", ndmin=2)
+            b = np.loadtxt(joints_file(integrator, case), comments="#",
+                           ndmin=2)
+            d = _maxabs(a - b) if a.shape == b.shape else float("inf")
+            check(f"{run}_sameAsNoStateFile", d <= TOL_INITIAL["atRestSame"],
+                  d, TOL_INITIAL["atRestSame"])
+
+        m = prescribed_metrics("atRestStale", case)
+        ok = m["theta2"] > TOL_INITIAL["staleTheta2"]
+        print(f"{'PASS' if ok else 'FAIL'} atRestStale_theta2 (qDdot kept:"
+              f" the first-order error) {m['theta2']:.3e} > "
+              f"{TOL_INITIAL['staleTheta2']:.1e}", flush=True)
+        nFail += not ok
+
+        folder = "1/uniform/rigidBodyMotionState"
+        straight = read_state(os.path.join(
+            case, "runs", "freeStraight", folder))
+        restarted = read_state(os.path.join(
+            case, "runs", "freeRestart", folder))
+        for key in ("q", "qDot", "qDdot"):
+            d = _maxabs(restarted[key] - straight[key]) \
+                / max(_maxabs(straight[key]), 1e-300)
+            check(f"freeRestart_{key}_equalsStraightRun",
+                  d <= TOL_INITIAL["restart"], d, TOL_INITIAL["restart"])
+    except (OSError, ValueError, KeyError) as err:
+        print(f"FAIL initialState {err!r}", flush=True)
+        nFail += 1
+
+    return nFail
+
+
 def table(case=CASE):
     """Markdown table of the measured errors (for the README)"""
     print("| run | theta1 [rad] | theta2, 0-1 s [rad] | theta2, 0-2 s [rad]"
@@ -299,12 +378,13 @@ def table(case=CASE):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("action", choices=("check", "table"))
+    parser.add_argument("action", choices=("check", "initialState", "table"))
     parser.add_argument("-case", default=CASE, help="case directory")
     args = parser.parse_args()
     if args.action == "check":
-        nFailed = run_checks(args.case)
-        sys.exit(1 if nFailed else 0)
+        sys.exit(1 if run_checks(args.case) else 0)
+    if args.action == "initialState":
+        sys.exit(1 if initial_state_checks(args.case) else 0)
     table(args.case)
 
 
