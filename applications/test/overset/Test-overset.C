@@ -25,6 +25,9 @@ Description
 
       - the rigid fit (Kabsch) recovers a known rotation and translation;
         a deformed pose gives a residual of the size of the deformation;
+      - a zone that is only nearly rigid (one face plane 1e-7 off): the
+        cell found in the reference frame is corrected to the one that
+        holds the point in the current mesh (currentCell);
       - on a block of hexahedra with jittered (warped, non-planar) interior
         points, moved rigidly: for random points (some outside) the walk
         from a random / previous / invalid seed, the octree and a brute-force
@@ -186,6 +189,57 @@ TEST(zoneDonorSearch, donorsEqualBruteForceInMovedMesh)
     EXPECT_GT(nInside, 500);
     EXPECT_GT(nOutside, 100);
     EXPECT_GT(search.nWalk(), 0);
+}
+
+
+TEST(zoneDonorSearch, currentCellOfNearlyRigidZone)
+{
+    // A zone translated rigidly except one interior face plane (x = 0.5),
+    // off by 1e-7 (a displacementLaplacian solved to its tolerance): a
+    // point between the rigid and the real plane is in column 2 in the
+    // reference frame and in column 1 in the current mesh
+    scratchTime time("flapFoamTest-overset", 1, 1);
+    const label n = 4;
+    const vector t(0.1, 0, 0);
+    const auto mesh0 = hexBlock(time(), "ref", n, 0);
+    const auto mesh = hexBlock(time(), "moved", n, 0, tensor::I, t);
+
+    pointField pts(mesh->points());
+    for (point& p : pts)
+    {
+        const point p0(p - t);
+        const bool interior =
+            p0.y() > 0.1 && p0.y() < 0.9 && p0.z() > 0.1 && p0.z() < 0.9;
+        if (interior && mag(p0.x() - 0.5) < 1e-9)
+        {
+            p.x() += 1e-7;
+        }
+    }
+    mesh->movePoints(pts);
+
+    zoneDonorSearch search(*mesh0, 16);
+    const scalar residual = search.fitTransform(mesh->points());
+    EXPECT_GT(residual, 5e-8);
+    EXPECT_LT(residual, 1e-7);
+
+    const labelList cellMap(identity(mesh->nCells()));
+    const point q(t + point(0.5 + 5e-8, 0.375, 0.375));
+    const label fromReference = search.findCell(search.toReference(q), -1);
+    const label expected = search.findCellBruteForce(q - t - point(1e-7, 0, 0));
+    ASSERT_GE(fromReference, 0);
+    EXPECT_TRUE(mesh->pointInCell(q, expected, polyMesh::CELL_TETS));
+    EXPECT_FALSE(mesh->pointInCell(q, fromReference, polyMesh::CELL_TETS));
+
+    search.resetCounters();
+    EXPECT_EQ(search.currentCell(*mesh, cellMap, q, fromReference), expected);
+    EXPECT_EQ(search.nCorrected(), 1);
+
+    // A point away from the faces keeps its cell; none: -1 stays
+    const point r(t + point(0.6, 0.375, 0.375));
+    const label cellR = search.findCell(search.toReference(r), -1);
+    EXPECT_EQ(search.currentCell(*mesh, cellMap, r, cellR), cellR);
+    EXPECT_EQ(search.currentCell(*mesh, cellMap, r, -1), -1);
+    EXPECT_EQ(search.nCorrected(), 1);
 }
 
 

@@ -64,11 +64,22 @@ Foam::cellCellStencils::octreeInverseDistance::holeCuttingTypeNames
 const Foam::word
 Foam::cellCellStencils::octreeInverseDistance::stencilPart("oversetStencil");
 
+const Foam::wordList
+Foam::cellCellStencils::octreeInverseDistance::allowedKeys
+({
+    "method", "search", "holeCutting", "noHoleCut", "maxWalk",
+    "rigidTolerance", "layerRelax", "tolerance", "searchBox",
+    "searchBoxDivisions", "log"
+});
+
 const Foam::scalar
 Foam::cellCellStencils::octreeInverseDistance::residualMargin(4);
 
 const Foam::scalar
 Foam::cellCellStencils::octreeInverseDistance::radiusTolerance(1e-6);
+
+const Foam::scalar
+Foam::cellCellStencils::octreeInverseDistance::roundOffResidual(1e-12);
 
 const Foam::scalar
 Foam::cellCellStencils::octreeInverseDistance::candidateRoundOff(1e-9);
@@ -112,6 +123,7 @@ EnumType Foam::cellCellStencils::octreeInverseDistance::readChoice
 
 void Foam::cellCellStencils::octreeInverseDistance::readSettings()
 {
+    checkKeys();
     search_ = readChoice("search", searchTypeNames, searchType::cached);
     holeCutting_ =
         readChoice
@@ -157,11 +169,25 @@ void Foam::cellCellStencils::octreeInverseDistance::readNumbers()
             << " out of range: must be in (0, 1)" << exit(FatalIOError);
     }
 
+    readSearchBox();
+
+    log_ = dict_.getOrDefault<bool>("log", false);
+}
+
+
+void Foam::cellCellStencils::octreeInverseDistance::readSearchBox()
+{
     useSearchBox_ = dict_.readIfPresent("searchBox", searchBox_);
-    if (useSearchBox_ && searchBox_.empty())
+    if
+    (
+        useSearchBox_
+     && (searchBox_.empty() || cmptMin(searchBox_.span()) <= 0)
+    )
     {
         FatalIOErrorInFunction(dict_)
-            << "searchBox " << searchBox_ << " is empty" << exit(FatalIOError);
+            << "searchBox " << searchBox_ << " is empty or flat: must be"
+            << " (min) (max) with max > min in every direction (a 2-D"
+            << " case too: span the mesh's thickness)" << exit(FatalIOError);
     }
 
     useDivisions_ = dict_.readIfPresent("searchBoxDivisions", divisions_);
@@ -173,7 +199,32 @@ void Foam::cellCellStencils::octreeInverseDistance::readNumbers()
             << exit(FatalIOError);
     }
 
-    log_ = dict_.getOrDefault<bool>("log", false);
+    // The voxel index must fit in a label
+    const scalar nVoxels =
+        scalar(divisions_.x())*scalar(divisions_.y())*scalar(divisions_.z());
+    if (useDivisions_ && nVoxels > scalar(labelMax))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "searchBoxDivisions " << divisions_ << " out of range: "
+            << nVoxels << " voxels, more than a label holds: the product of"
+            << " the components must be <= " << labelMax
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::cellCellStencils::octreeInverseDistance::checkKeys() const
+{
+    for (const word& key : dict_.toc())
+    {
+        if (!allowedKeys.found(key))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "unknown key " << key << " in oversetInterpolation of "
+                << "method " << typeName << ": allowed keys are "
+                << allowedKeys << exit(FatalIOError);
+        }
+    }
 }
 
 
@@ -320,6 +371,7 @@ void Foam::cellCellStencils::octreeInverseDistance::buildCache
     cellRadius_.setSize(nZones);
     bins_.setSize(nZones);
     zoneResidual_.setSize(nZones, Zero);
+    nearlyRigidSaid_ = boolList(nZones, false);
 
     // Voxel maps: refilled at the next update
     localVoxels_ = List<patchVoxelMap>(nZones);
@@ -338,6 +390,34 @@ void Foam::cellCellStencils::octreeInverseDistance::buildCache
     Info<< type() << " : built the search cache of " << nZones
         << " zones in their own frames at time " << mesh_.time().timeName()
         << endl;
+}
+
+
+bool Foam::cellCellStencils::octreeInverseDistance::nearlyRigid
+(
+    const label zonei
+) const
+{
+    return zoneResidual_[zonei] > roundOffResidual*zoneSearch_[zonei].size();
+}
+
+
+Foam::label Foam::cellCellStencils::octreeInverseDistance::currentDonor
+(
+    const label srcI,
+    const point& p,
+    const label srcCelli
+) const
+{
+    if (!nearlyRigid(srcI))
+    {
+        return srcCelli;
+    }
+    return
+        zoneSearch_[srcI].currentCell
+        (
+            mesh_, zoneParts_[srcI].cellMap(), p, srcCelli
+        );
 }
 
 
@@ -373,6 +453,24 @@ void Foam::cellCellStencils::octreeInverseDistance::fitZones()
                 << endl;
             buildZone(zonei, zoneID);
             fullReason_ = "zone " + Foam::name(zonei) + " rebuilt";
+        }
+        else if (nearlyRigid(zonei))
+        {
+            // The current-point checks use the mesh's tet base points:
+            // collective when first built (the residual is the same on
+            // every rank)
+            (void)mesh_.tetBasePtIs();
+            if (!nearlyRigidSaid_[zonei])
+            {
+                nearlyRigidSaid_[zonei] = true;
+                Info<< type() << " : zone " << zonei << " moves only nearly"
+                    << " rigidly (rigid-fit residual " << residual
+                    << " = " << residual/size << " of its size, above"
+                    << " round-off " << roundOffResidual << ", below"
+                    << " rigidTolerance " << rigidTolerance_ << "): its"
+                    << " donors are checked against the current points"
+                    << endl;
+            }
         }
 
         treeBoundBox& zoneBb = ws_.zoneBb[zonei][0];
@@ -471,6 +569,7 @@ Foam::cellCellStencils::octreeInverseDistance::octreeInverseDistance
     voxelExchange_(),
     cellRadius_(),
     zoneResidual_(),
+    nearlyRigidSaid_(),
     donorGlobal_(),
     stencilGlobal_(),
     ws_(),

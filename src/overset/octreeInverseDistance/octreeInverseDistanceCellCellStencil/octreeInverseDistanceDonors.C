@@ -72,7 +72,12 @@ void Foam::cellCellStencils::octreeInverseDistance::findDonors
             }
 
             const label srcCelli =
-                search.findCell(search.toReference(cc[celli]), seed);
+                currentDonor
+                (
+                    srcI,
+                    cc[celli],
+                    search.findCell(search.toReference(cc[celli]), seed)
+                );
             prev[celli] = srcCelli;
 
             if

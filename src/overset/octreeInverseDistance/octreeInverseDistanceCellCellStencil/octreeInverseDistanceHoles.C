@@ -94,12 +94,14 @@ Foam::cellCellStencils::octreeInverseDistance::voxelDivisions() const
 }
 
 
-void Foam::cellCellStencils::octreeInverseDistance::markZoneBoundaries
+Foam::boundBox
+Foam::cellCellStencils::octreeInverseDistance::markZoneBoundaries
 (
     const label zonei,
     const bool fillVoxels
 )
 {
+    boundBox dropped;
     // Voxels of the zone's boundary faces at the current pose: the zones
     // share no faces, so the zone's sub-mesh boundary is the mesh boundary
     // restricted to the zone (the sub-mesh's exposed-face patch is empty)
@@ -148,9 +150,9 @@ void Foam::cellCellStencils::octreeInverseDistance::markZoneBoundaries
                 {
                     map.fillOversetFace(faceBb);
                 }
-                else
+                else if (!map.fillPatchFace(faceBb))
                 {
-                    map.fillPatchFace(faceBb);
+                    dropped.add(faceBb);
                 }
             }
         }
@@ -167,6 +169,46 @@ void Foam::cellCellStencils::octreeInverseDistance::markZoneBoundaries
         forAll(pointMap, i)
         {
             filledPoints[i] = points[pointMap[i]];
+        }
+    }
+    return dropped;
+}
+
+
+void Foam::cellCellStencils::octreeInverseDistance::checkSearchBox
+(
+    const label zonei,
+    boundBox dropped
+) const
+{
+    dropped.reduce();
+    if (dropped.empty())
+    {
+        return;
+    }
+    forAll(zoneSearch_, zonej)
+    {
+        // Zone zonej's box (all ranks) at the current pose
+        treeBoundBox bb0(treeBoundBox::invertedBox);
+        for (const treeBoundBox& procBb : procBb_[zonej])
+        {
+            if (!procBb.empty())
+            {
+                bb0.add(procBb);
+            }
+        }
+        const treeBoundBox bb(zoneSearch_[zonej].toCurrent(bb0));
+        if (zonej != zonei && cuts(zonei, zonej) && bb.overlaps(dropped))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "searchBox " << searchBox_ << " does not contain the"
+                << " walls of zone " << zonei << " at time "
+                << mesh_.time().timeName() << ": walls in " << dropped
+                << " meet zone " << zonej << " (" << bb << ") and would"
+                << " cut no holes there; searchBox must contain every"
+                << " zone's walls where they meet another zone at every"
+                << " pose (or leave searchBox out: the zones' own boxes)"
+                << exit(FatalIOError);
         }
     }
 }
@@ -282,7 +324,11 @@ void Foam::cellCellStencils::octreeInverseDistance::fillVoxels()
                     << abort(FatalError);
             }
         }
-        markZoneBoundaries(zonei, fill);
+        const boundBox dropped(markZoneBoundaries(zonei, fill));
+        if (fill && useSearchBox_)
+        {
+            checkSearchBox(zonei, dropped);
+        }
         if (fill && parallel)
         {
             patchVoxels_[zonei] = localVoxels_[zonei].patchVoxels();

@@ -90,8 +90,14 @@ void Foam::cellCellStencils::octreeInverseDistance::answerQueries
     forAll(points, i)
     {
         const label srci = zones[i];
+        const zoneDonorSearch& search = zoneSearch_[srci];
         const label subCelli =
-            zoneSearch_[srci].findCell(points[i], seeds[i]);
+            currentDonor
+            (
+                srci,
+                search.toCurrent(points[i]),
+                search.findCell(points[i], seeds[i])
+            );
         if (subCelli != -1)
         {
             found[i] = subCelli;

@@ -175,6 +175,7 @@ void Foam::cellCellStencils::octreeInverseDistance::logStep
             << " walk " << returnReduce(s.nWalk(), sumOp<label>())
             << " octree " << returnReduce(s.nOctree(), sumOp<label>())
             << " outside " << returnReduce(s.nOutside(), sumOp<label>())
+            << " corrected " << returnReduce(s.nCorrected(), sumOp<label>())
             << nl;
     }
     if (Pstream::parRun())

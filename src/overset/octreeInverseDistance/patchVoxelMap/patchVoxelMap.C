@@ -374,11 +374,11 @@ void Foam::patchVoxelMap::reset
 }
 
 
-void Foam::patchVoxelMap::fillPatchFace(const boundBox& faceBb)
+bool Foam::patchVoxelMap::fillPatchFace(const boundBox& faceBb)
 {
     if (!bb_.overlaps(faceBb))
     {
-        return;
+        return false;
     }
     // PATCH range and blocks from the unclipped top voxel (as filled)
     addPatchRange
@@ -391,6 +391,7 @@ void Foam::patchVoxelMap::fillPatchFace(const boundBox& faceBb)
         types_, bb_, nDivs_, faceBb, cellCellStencil::patchCellType::PATCH
     );
     patchBoxes_.append(faceBb);
+    return true;
 }
 
 

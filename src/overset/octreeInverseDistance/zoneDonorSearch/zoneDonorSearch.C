@@ -87,7 +87,8 @@ Foam::zoneDonorSearch::zoneDonorSearch
     c_(Zero),
     nWalk_(0),
     nOctree_(0),
-    nOutside_(0)
+    nOutside_(0),
+    nCorrected_(0)
 {
     const pointField& pts = mesh_.points();
 
@@ -312,6 +313,35 @@ Foam::label Foam::zoneDonorSearch::findCell
 
     ++nOctree_;
     return mesh_.cellTree().findInside(p0);
+}
+
+
+Foam::label Foam::zoneDonorSearch::currentCell
+(
+    const polyMesh& currentMesh,
+    const labelUList& cellMap,
+    const point& p,
+    const label celli
+) const
+{
+    if
+    (
+        celli < 0
+     || currentMesh.pointInCell(p, cellMap[celli], polyMesh::CELL_TETS)
+    )
+    {
+        return celli;
+    }
+
+    for (const label nbr : mesh_.cellCells()[celli])
+    {
+        if (currentMesh.pointInCell(p, cellMap[nbr], polyMesh::CELL_TETS))
+        {
+            ++nCorrected_;
+            return nbr;
+        }
+    }
+    return celli;
 }
 
 
