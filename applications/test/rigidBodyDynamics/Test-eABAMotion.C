@@ -194,6 +194,56 @@ TEST(eABAMotion, RestartFromWrittenDictionary)
 
 
 
+// Initial state: a state dictionary not written by a step of the run at
+// this time is a fresh start (prescribed joints from their motions, free
+// accelerations from the eABA); one written by the run is kept as written
+TEST(eABAMotion, FreshStartUnlessWrittenByTheRunAtThisTime)
+{
+    const dictionary modelDict(harmonicCase("symplectic", 1, 1));
+    const label n = 7;
+
+    dictionary atRest;
+    atRest.add("q", scalarField(n, Zero));
+    atRest.add("qDot", scalarField(n, Zero));
+    atRest.add("qDdot", scalarField(n, Zero));
+
+    testMotion fresh(runTime(), modelDict, atRest);
+    EXPECT_TRUE(fresh.freshStart());
+    EXPECT_EQ(fresh.state().t(), runTime().value());
+
+    // The consistent state, computed here
+    RBD::rigidBodyModelState consistent(fresh);
+    consistent.t() = runTime().value();
+    fresh.evaluate
+    (
+        consistent,
+        scalarField(n, Zero),
+        Field<spatialVector>(fresh.nBodies(), Zero)
+    );
+    compareStates(fresh.state(), consistent, 0, 0);
+    EXPECT_GT(mag(fresh.state().qDdot()[harmonics[0].q]), 1);
+
+    // Written by a step of the run at this time (t, deltaT > 0): kept
+    dictionary written(atRest);
+    written.add("t", runTime().value());
+    written.add("deltaT", 1e-3);
+    testMotion restarted(runTime(), modelDict, written);
+    EXPECT_FALSE(restarted.freshStart());
+    EXPECT_EQ(restarted.state().qDdot(), scalarField(n, Zero));
+
+    // Written at another time, or before any step (deltaT 0): fresh
+    for (const scalar dt : {0.0, 1e-3})
+    {
+        dictionary other(atRest);
+        other.add("t", runTime().value() + 0.5);
+        other.add("deltaT", dt);
+        testMotion m(runTime(), modelDict, other);
+        EXPECT_TRUE(m.freshStart()) << "deltaT " << dt;
+        compareStates(m.state(), consistent, 0, 0);
+    }
+}
+
+
 // eABAMotion::write mirrors the constructor, which reads g (the stock
 // rigidBodyMotion::write does not write g): a model re-read from its
 // written dictionary keeps gravity
