@@ -41,7 +41,11 @@ Usage
     Options:
       - \par -couplings FILE (default constant/oversetCouplings)
       - \par -decomposition FILE (default constant/cellDecomposition)
-      - \par -ranks N: the number of ranks (default: the largest rank + 1)
+      - \par -ranks N: the number of ranks (default: the largest rank + 1;
+        not fewer)
+
+    A decomposition that is not a rank >= 0 for each cell of the mesh, or
+    a bad -ranks, stops with an error naming the file or the option.
 
     Output lines start with "oversetCouplingsReport:" (couplingReport's
     format).
@@ -53,8 +57,37 @@ Usage
 #include "polyMesh.H"
 #include "labelIOList.H"
 #include "couplingReport.H"
+#include "runInputCheck.H"
 
 using namespace Foam;
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// A cell-to-rank list of the mesh: a rank >= 0 for each cell, else
+// FatalIOError naming the file
+void checkDecomposition(const labelIOList& decomp, const label nCells)
+{
+    if (decomp.size() != nCells)
+    {
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, decomp.objectPath())
+            << decomp.objectPath().c_str() << " has " << decomp.size()
+            << " entries: a rank for each of the " << nCells << " cells of"
+            << " the mesh is allowed (decomposePar -cellDist of this case)"
+            << exit(FatalIOError);
+    }
+    if (decomp.size() && min(decomp) < 0)
+    {
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, decomp.objectPath())
+            << "rank " << min(decomp) << " in " << decomp.objectPath().c_str()
+            << ": ranks >= 0 are allowed" << exit(FatalIOError);
+    }
+}
+
+} // End anonymous namespace
+
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -99,8 +132,14 @@ int main(int argc, char *argv[])
             false
         )
     );
-    const label nRanks =
-        args.getOrDefault<label>("ranks", decomp.empty() ? 1 : max(decomp) + 1);
+    checkDecomposition(decomp, mesh.nCells());
+    const label nUsed = decomp.empty() ? 1 : max(decomp) + 1;
+    const label nRanks = runInputCheck::option<label>
+    (
+        args, "ranks", nUsed, labelMinMax(nUsed, labelMax),
+        ("an integer >= " + Foam::name(nUsed) + " (the ranks of "
+       + decompFile + ")").c_str()
+    );
 
     const oversetCouplings couplings(mesh, couplingsFile, mesh.nCells());
     const couplingGraph graph(mesh, couplings, 1, scalarField());

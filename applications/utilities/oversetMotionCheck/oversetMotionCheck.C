@@ -69,7 +69,6 @@ Usage
 #include "cellCellStencilObject.H"
 #include "oversetCouplings.H"
 #include "runInputCheck.H"
-#include "MinMax.H"
 #include "Switch.H"
 
 using namespace Foam;
@@ -84,36 +83,6 @@ void sumOverRanks(labelList& counts)
 {
     Pstream::listCombineGather(counts, plusEqOp<label>());
     Pstream::listCombineScatter(counts);
-}
-
-
-// The value of an option (the default if not given), checked: a number
-// (scalar, label) in range, else FatalError naming the option, the value
-// and what is allowed
-template<class Type>
-Type readOption
-(
-    const argList& args,
-    const word& option,
-    const Type& deflt,
-    const MinMax<Type>& range,
-    const char* allowed
-)
-{
-    Type value = deflt;
-    if
-    (
-        args.found(option)
-     && (!runInputCheck::read(args[option], value) || !range.contains(value))
-    )
-    {
-        FatalErrorInFunction
-            << "-" << option << " '" << args[option].c_str() << "': "
-            << allowed << " is allowed (default " << deflt << ")"
-            << exit(FatalError);
-    }
-
-    return value;
 }
 
 
@@ -308,12 +277,12 @@ int main(int argc, char *argv[])
 
     // The options and the input the stock readers do not survive, before
     // they read
-    const scalar maxHoleFraction = readOption<scalar>
+    const scalar maxHoleFraction = runInputCheck::option<scalar>
     (
         args, "maxHoleFraction", 0.25, scalarMinMax(VSMALL, 1),
         "a fraction in (0, 1]"
     );
-    const label sampleEvery = readOption<label>
+    const label sampleEvery = runInputCheck::option<label>
     (
         args, "sampleEvery", 10, labelMinMax(1, labelMax),
         "an integer >= 1"
