@@ -29,6 +29,7 @@ License
 #include "mapDistribute.H"
 #include "stepTimers.H"
 #include "Time.H"
+#include "FlatOutput.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -220,9 +221,9 @@ void Foam::cellCellStencils::octreeInverseDistance::checkKeys() const
         if (!allowedKeys.found(key))
         {
             FatalIOErrorInFunction(dict_)
-                << "unknown key " << key << " in oversetInterpolation of "
-                << "method " << typeName << ": allowed keys are "
-                << allowedKeys << exit(FatalIOError);
+                << key << " is not a key of method " << typeName
+                << " (misspelled?): allowed keys are "
+                << flatOutput(allowedKeys) << exit(FatalIOError);
         }
     }
 }

@@ -94,14 +94,14 @@ Foam::cellCellStencils::octreeInverseDistance::voxelDivisions() const
 }
 
 
-Foam::boundBox
+Foam::List<Foam::boundBox>
 Foam::cellCellStencils::octreeInverseDistance::markZoneBoundaries
 (
     const label zonei,
     const bool fillVoxels
 )
 {
-    boundBox dropped;
+    DynamicList<boundBox> dropped;
     // Voxels of the zone's boundary faces at the current pose: the zones
     // share no faces, so the zone's sub-mesh boundary is the mesh boundary
     // restricted to the zone (the sub-mesh's exposed-face patch is empty)
@@ -152,7 +152,7 @@ Foam::cellCellStencils::octreeInverseDistance::markZoneBoundaries
                 }
                 else if (!map.fillPatchFace(faceBb))
                 {
-                    dropped.add(faceBb);
+                    dropped.append(faceBb);
                 }
             }
         }
@@ -171,24 +171,26 @@ Foam::cellCellStencils::octreeInverseDistance::markZoneBoundaries
             filledPoints[i] = points[pointMap[i]];
         }
     }
-    return dropped;
+    return List<boundBox>(std::move(dropped));
 }
 
 
 void Foam::cellCellStencils::octreeInverseDistance::checkSearchBox
 (
     const label zonei,
-    boundBox dropped
+    const List<boundBox>& dropped
 ) const
 {
-    dropped.reduce();
-    if (dropped.empty())
-    {
-        return;
-    }
+    // The first dropped face that meets another zone's box (all ranks,
+    // current pose), that zone; -1: none
+    boundBox face;
+    label met = -1;
     forAll(zoneSearch_, zonej)
     {
-        // Zone zonej's box (all ranks) at the current pose
+        if (zonej == zonei || !cuts(zonei, zonej))
+        {
+            continue;
+        }
         treeBoundBox bb0(treeBoundBox::invertedBox);
         for (const treeBoundBox& procBb : procBb_[zonej])
         {
@@ -198,18 +200,26 @@ void Foam::cellCellStencils::octreeInverseDistance::checkSearchBox
             }
         }
         const treeBoundBox bb(zoneSearch_[zonej].toCurrent(bb0));
-        if (zonej != zonei && cuts(zonei, zonej) && bb.overlaps(dropped))
+        for (const boundBox& faceBb : dropped)
         {
-            FatalIOErrorInFunction(dict_)
-                << "searchBox " << searchBox_ << " does not contain the"
-                << " walls of zone " << zonei << " at time "
-                << mesh_.time().timeName() << ": walls in " << dropped
-                << " meet zone " << zonej << " (" << bb << ") and would"
-                << " cut no holes there; searchBox must contain every"
-                << " zone's walls where they meet another zone at every"
-                << " pose (or leave searchBox out: the zones' own boxes)"
-                << exit(FatalIOError);
+            if (met == -1 && bb.overlaps(faceBb))
+            {
+                face = faceBb;
+                met = zonej;
+            }
         }
+    }
+
+    if (returnReduce(met, maxOp<label>()) != -1)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "searchBox " << searchBox_ << " does not contain the"
+            << " walls of zone " << zonei << " at time "
+            << mesh_.time().timeName() << ": e.g. the wall face in "
+            << face << " meets zone " << met << " and would cut no holes"
+            << " there; searchBox must contain every zone's walls where"
+            << " they meet another zone, at every pose (or leave searchBox"
+            << " out: the zones' own boxes)" << exit(FatalIOError);
     }
 }
 
@@ -324,7 +334,7 @@ void Foam::cellCellStencils::octreeInverseDistance::fillVoxels()
                     << abort(FatalError);
             }
         }
-        const boundBox dropped(markZoneBoundaries(zonei, fill));
+        const List<boundBox> dropped(markZoneBoundaries(zonei, fill));
         if (fill && useSearchBox_)
         {
             checkSearchBox(zonei, dropped);
