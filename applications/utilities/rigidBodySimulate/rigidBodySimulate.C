@@ -27,9 +27,11 @@ Group
 
 Description
     Runs a multibody model with prescribed joints (eABA) without a mesh:
-    gravity and restraints are the only loads.  The same model and the same
-    dictionaries as the overset mesh motion solver, so the dynamics can be
-    checked quickly.
+    gravity, restraints and the loads that need no flow (bodyLoad vacuum or
+    aerodynamics: quasi-steady wings, evaluated at every sub-iteration from
+    the current state).  The same model and the same dictionaries as the
+    overset mesh motion solver, so the dynamics can be checked quickly and
+    a drone flown with quasi-steady wings.
 
     Reads
       - constant/dynamicMeshDict (or -dict FILE): the multibody dictionary
@@ -37,13 +39,16 @@ Description
         bodies, restraints, imposedMotion: see eABAMotion) at the top level,
         in eABAMeshMotionCoeffs (flapFoam's overset motion solver) or in a
         sub-dictionary of solvers (the paper authors' layout; -solver NAME
-        chooses if several have bodies): see multibodyDict;
+        chooses if several have bodies): see multibodyDict; the loads:
+        -bodyLoad TYPE, else its bodyLoad when that needs no flow (not
+        patchLoad), else vacuum;
       - system/controlDict: startTime, endTime, deltaT, writeControl and
         writeInterval (deltaT and writeInterval > 0, endTime not before the
         start time: FatalIOError otherwise);
       - <startTime>/uniform/rigidBodyMotionState when present: the initial
-        q, qDot (and qDdot) lists; zero otherwise.  Without qDdot the
-        initial accelerations are computed from the state.
+        state; a state not written by a step of a run at this time (or
+        none) is a fresh start (eABAMotion), made consistent here with the
+        loads of the initial state.
 
     Writes
       - the q-index -> body/joint map to the log;
@@ -56,6 +61,7 @@ Description
 
 Usage
     \b rigidBodySimulate [-case DIR] [-dict FILE] [-solver NAME]
+        [-bodyLoad vacuum|aerodynamics]
 
 \*---------------------------------------------------------------------------*/
 
@@ -66,6 +72,8 @@ Usage
 #include "IFstream.H"
 #include "eABAMotion.H"
 #include "multibodyDict.H"
+#include "runInputCheck.H"
+#include "bodyLoad.H"
 
 using namespace Foam;
 
@@ -73,36 +81,6 @@ using namespace Foam;
 
 namespace
 {
-
-// Before Time reads system/controlDict (writeInterval 0 is a sigFpe there,
-// deltaT 0 an endless loop here): deltaT and writeInterval must be > 0
-void checkControlDict(const argList& args)
-{
-    const fileName file(args.path()/"system"/"controlDict");
-
-    if (!isFile(file))
-    {
-        return;     // Time says so
-    }
-
-    IFstream is(file);
-    const dictionary dict(is);
-
-    for (const word key : {"deltaT", "writeInterval"})
-    {
-        // Missing: Time says so
-        const scalar value = dict.getOrDefault<scalar>(key, 1);
-
-        if (!(value > 0))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry '" << key << "' = " << value << " in " << file
-                << " is out of range: allowed " << key << " > 0" << nl
-                << exit(FatalIOError);
-        }
-    }
-}
-
 
 // endTime not before the start time (startTime or the latest time)
 void checkEndTime(const Time& runTime)
@@ -119,6 +97,56 @@ void checkEndTime(const Time& runTime)
             << exit(FatalIOError);
     }
 }
+
+
+// The bodies' loads: -bodyLoad TYPE, else the dictionary's bodyLoad when it
+// needs no flow (patchLoad does: then none, as with fluidLoad off)
+struct appliedLoads
+{
+    autoPtr<bodyLoad> load;
+    Field<spatialVector> fx;
+
+    appliedLoads
+    (
+        const Time& runTime,
+        const RBD::rigidBodyModel& model,
+        const dictionary& modelDict,
+        const argList& args
+    )
+    :
+        fx(model.nBodies(), Zero)
+    {
+        const bool fluid = modelDict.getOrDefault<Switch>("fluidLoad", true);
+        word type(modelDict.getOrDefault<word>("bodyLoad", "patchLoad"));
+        if (!fluid || type == "patchLoad")
+        {
+            type = "vacuum";
+        }
+        args.readIfPresent("bodyLoad", type);
+        if (type == "patchLoad")
+        {
+            FatalErrorInFunction
+                << "-bodyLoad patchLoad: the flow's load needs the flow;"
+                << " rigidBodySimulate runs without a mesh (allowed: vacuum,"
+                << " aerodynamics)" << exit(FatalError);
+        }
+
+        dictionary dict(modelDict);
+        dict.set("bodyLoad", type);
+        dict.set("fluidLoad", true);
+        load = bodyLoad::New(runTime, model, dict);
+        Info<< "Loads: " << type
+            << (type == "vacuum" ? " (gravity and restraints only)" : "")
+            << nl << endl;
+    }
+
+    //- The loads of a state
+    const Field<spatialVector>& of(const RBD::rigidBodyModelState& state)
+    {
+        load->loads(state, fx);
+        return fx;
+    }
+};
 
 
 // Initial state: <startTime>/uniform/rigidBodyMotionState if present (zero
@@ -146,28 +174,26 @@ dictionary readInitialState(const Time& runTime)
 }
 
 
-// Consistent state at the start: exact prescribed joints, free
-// accelerations and the prescribed joints' forces.  A restart keeps the
-// stored accelerations (the next step starts from them, as a run that
-// did not stop) and only evaluates the forces; a state without qDdot
-// gets consistent accelerations.
+// The start: a fresh start (eABAMotion) is made consistent again with the
+// loads of the initial state (the model took none); a restart keeps the
+// stored state and only evaluates the prescribed joints' forces
 void initialiseState
 (
     RBD::eABAMotion& model,
-    const dictionary& stateDict,
     const scalarField& tau,
-    const Field<spatialVector>& fx
+    appliedLoads& loads
 )
 {
-    if (stateDict.found("qDdot"))
+    const Field<spatialVector>& fx = loads.of(model.state());
+    if (model.freshStart())
+    {
+        model.evaluate(model.state(), tau, fx);
+    }
+    else
     {
         RBD::rigidBodyModelState s(model.state());
         model.evaluate(s, tau, fx);
         model.forwardDynamicsCorrection(model.state());
-    }
-    else
-    {
-        model.evaluate(model.state(), tau, fx);
     }
 }
 
@@ -202,7 +228,7 @@ void timeLoop
     Time& runTime,
     RBD::eABAMotion& model,
     const scalarField& tau,
-    const Field<spatialVector>& fx,
+    appliedLoads& loads,
     OFstream& os
 )
 {
@@ -215,7 +241,14 @@ void timeLoop
         model.newTime();
         for (label iter = 0; iter < model.nIter(); ++iter)
         {
-            model.solve(runTime.value(), runTime.deltaTValue(), tau, fx);
+            // The loads of the current estimate of the new state
+            model.solve
+            (
+                runTime.value(),
+                runTime.deltaTValue(),
+                tau,
+                loads.of(model.state())
+            );
         }
 
         if (runTime.writeTime())
@@ -235,14 +268,24 @@ int main(int argc, char *argv[])
     argList::addNote
     (
         "Run a multibody model with prescribed joints (eABA) without a mesh:"
-        " gravity and restraints only."
+        " gravity, restraints and loads that need no flow."
     );
     argList::noParallel();
     multibodyDict::addOptions();
+    argList::addOption
+    (
+        "bodyLoad",
+        "type",
+        "the bodies' loads: vacuum, or aerodynamics (the wings of the"
+        " dictionary's aerodynamics entry); default: the dictionary's"
+        " bodyLoad when it needs no flow, else vacuum"
+    );
 
     #include "setRootCase.H"
 
-    checkControlDict(args);
+    // Before Time reads them (writeInterval 0 is a sigFpe there, deltaT 0
+    // an endless loop here, 1e400 a sigFpe in the tokenizer)
+    runInputCheck::check(args, {"constant/dynamicMeshDict"});
 
     #include "createTime.H"
 
@@ -260,12 +303,11 @@ int main(int argc, char *argv[])
         << "Integrator: " << modelDict.subDict("solver").get<word>("type")
         << ", nIter " << model.nIter() << nl << endl;
 
-    // Gravity and restraints only
     const scalarField tau(model.nDoF(), Zero);
-    const Field<spatialVector> fx(model.nBodies(), Zero);
+    appliedLoads loads(runTime, model, modelDict, args);
 
     model.state().t() = runTime.value();
-    initialiseState(model, stateDict, tau, fx);
+    initialiseState(model, tau, loads);
 
     // Output table
     const fileName outputDir
@@ -282,7 +324,7 @@ int main(int argc, char *argv[])
 
     Info<< "Starting time loop" << nl << endl;
 
-    timeLoop(runTime, model, tau, fx, os);
+    timeLoop(runTime, model, tau, loads, os);
 
     model.writeState(runTime);
 

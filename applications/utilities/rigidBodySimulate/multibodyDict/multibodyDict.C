@@ -179,7 +179,10 @@ void Foam::multibodyDict::findModel()
 void Foam::multibodyDict::checkKeys() const
 {
     const dictionary& model = dict();
-    const wordList& modelKeys = RBD::eABAMotion::keys();
+
+    // The model's keys and those of the loads it can take without a mesh
+    wordList modelKeys(RBD::eABAMotion::keys());
+    modelKeys.append(wordList({"bodyLoad", "fluidLoad", "aerodynamics"}));
 
     // The dictionary of the mesh motion solver that holds the model, if any
     const bool inCoeffs = location_.ends_with(coeffsName);
@@ -250,3 +253,51 @@ void Foam::multibodyDict::reportOtherSolvers() const
 }
 
 
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+void Foam::multibodyDict::addOptions()
+{
+    argList::addOption
+    (
+        "dict",
+        "file",
+        "The dictionary with the multibody model"
+        " (default: constant/dynamicMeshDict)"
+    );
+    argList::addOption
+    (
+        "solver",
+        "name",
+        "The sub-dictionary of solvers with the multibody model (needed"
+        " when several have bodies)"
+    );
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::multibodyDict::multibodyDict(const Time& runTime, const argList& args)
+:
+    meshDict_(dictIO(runTime, args)),
+    location_(),
+    modelDictPtr_(nullptr)
+{
+    word name;
+    if (args.readIfPresent("solver", name))
+    {
+        selectSolver(name);
+    }
+    else
+    {
+        findModel();
+    }
+
+    Info<< "Multibody model: " << meshDict_.objectPath().c_str() << ' '
+        << (location_.empty() ? "(top level)" : location_.c_str()) << nl;
+
+    checkKeys();
+}
+
+
+// ************************************************************************* //
