@@ -114,6 +114,63 @@ motionCycle()
     fi
 }
 
+# badInput <what> <message> <command...>: the command (an Allrun or a bench
+# script given a bad option) stops within 60 s with a non-zero exit and a
+# message holding <message> (the option, the value and what is allowed),
+# and leaves ${badInputDir:-runs}/ as it was (nothing made)
+badInput()
+{
+    local what="$1" message="$2" dir="${badInputDir:-runs}"
+    shift 2
+    local before after out rc
+    before=$(ls -A "$dir")
+    out=$(timeout 60 "$@" 2>&1 < /dev/null)
+    rc=$?
+    after=$(ls -A "$dir")
+    if [ "$rc" -ne 0 ] && [ "$rc" -ne 124 ] && [[ "$out" == *"$message"* ]] \
+       && [ "$before" = "$after" ]
+    then
+        echo "PASS bad input $what: exit $rc, \"$message\", nothing made"
+    else
+        echo "FAIL bad input $what: exit $rc (124: hung), output" \
+             "\"$(tail -c 300 <<< "$out")\", expected \"$message\";" \
+             "$dir/ $([ "$before" = "$after" ] && echo unchanged || \
+             echo changed)"
+        status=1
+    fi
+}
+
+# copiedCase <label> <case folder> <Allrun options...>: the case copied
+# out of the project tree (without runs/) runs there with only flapFoam's
+# etc/bashrc sourced in a clean environment; a copy without it stops with
+# a message saying what to source
+copiedCase()
+{
+    local label="$1" case="$2"
+    shift 2
+    local copy t0=$SECONDS rc
+    copy="$(mktemp -d "${TMPDIR:-/tmp}/flapFoam-copiedCase-XXXXXX")" || return
+    (cd "$case" && tar cf - --exclude=./runs --exclude='log.*' .) \
+        | (cd "$copy" && tar xf -)
+    env -i HOME="$HOME" PATH=/usr/bin:/bin bash -c \
+        'a=("$@"); set --; . "$0/etc/bashrc" && exec nice -n 10 "${a[@]}"' \
+        "$FLAPFOAM_PROJECT_DIR" "$copy/Allrun" "$@" \
+        > "runs/log.Alltest.$label" 2>&1
+    rc=$?
+    if [ "$rc" -eq 0 ]
+    then
+        echo "PASS [$label] a copy in $copy ran with only etc/bashrc:" \
+             "Allrun $* ($((SECONDS - t0)) s)"
+    else
+        echo "FAIL [$label] the copy's Allrun $* exited $rc (see" \
+             "runs/log.Alltest.$label)"
+        status=1
+    fi
+    badInputDir="$copy" badInput "$label environment not set" \
+        "source it first" env -i PATH=/usr/bin:/bin "$copy/Allrun" "$@"
+    rm -rf "$copy"
+}
+
 # result <label> <checkRun.py arguments...>
 result()
 {
@@ -148,8 +205,8 @@ vacuum()
                  "writeInterval 1"
     do
         set -- $entry
-        foamDictionary -entry "$1" -set "$2" "$rbs/system/controlDict" \
-            > /dev/null
+        foamDictionary -precision 17 -entry "$1" -set "$2" \
+            "$rbs/system/controlDict" > /dev/null
     done
     if rigidBodySimulate -case "$rbs" > "$rbs/log.rigidBodySimulate" 2>&1
     then

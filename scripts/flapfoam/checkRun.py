@@ -38,6 +38,15 @@ non-zero on failure.
         the sign of qDot_i (e.g. -midStroke: phi(0) = 0 decreasing,
         alpha(0) = -45 deg).
 
+    checkRun.py dictionary RUN GIVEN [--changed KEY ...]
+        Every entry of the dictionary file GIVEN (the user's, e.g. the
+        case's constant/dynamicMeshDict.eABA) holds the same value in RUN
+        (the run folder's copy, rewritten by Allrun's foamDictionary
+        edits): words equal, numbers equal as doubles (a rewrite at 6
+        digits turns 1.3089969389957472 into 1.309); the KEYs (slash paths,
+        e.g. eABAMeshMotionCoeffs/fluidLoad) are the entries Allrun was
+        asked to change: present in RUN, not compared.
+
     checkRun.py rbs A B [--tol 1e-10]
         Every row of A's postProcessing/eABAMeshMotion/0/joints.dat against
         B's postProcessing/rigidBodySimulate/0/joints.dat (all columns, the
@@ -47,12 +56,13 @@ non-zero on failure.
 import argparse
 import math
 import os
+import re
 import sys
 
 import numpy as np
 
 from flapfoam import checks, stepTimers
-from flapfoam.foamDict import multibodyCoeffs, readState
+from flapfoam.foamDict import multibodyCoeffs, readFoamDict, readState
 from flapfoam.tables import joinedTable, startFolders, timeFolders
 from flapfoam.wang import imposedJoints
 
@@ -263,6 +273,53 @@ def checkRbs(args):
                   % (len(ia), len(ca) - 1, worst, worstCol, args.tol))
 
 
+def dictLeaves(d, prefix=""):
+    """(slash path, tokens) of every entry of a readFoamDict dict."""
+    for k, v in d.items():
+        if isinstance(v, dict):
+            yield from dictLeaves(v, prefix + k + "/")
+        else:
+            yield prefix + k, v
+
+
+def sameTokens(a, b):
+    """Equal token lists: numbers as doubles, words as written."""
+    if len(a) != len(b):
+        return False
+    for x, y in zip(a, b):
+        try:
+            if float(x) != float(y):
+                return False
+        except ValueError:
+            if x != y:
+                return False
+    return True
+
+
+def checkDictionary(args):
+    given = dict(dictLeaves(readFoamDict(args.given)))
+    run = dict(dictLeaves(readFoamDict(args.run)))
+    changed = set(args.changed)
+    bad = [k for k in sorted(given) if k not in changed and k != "FoamFile/note"
+           and not sameTokens(given[k], run.get(k, []))]
+    missing = sorted(changed - set(run))
+    nNumbers = sum(1 for k in given if k not in changed for t in given[k]
+                   if re.match(r"^[-+]?[0-9.]+([eE][-+]?[0-9]+)?$", t))
+    text = ("%s: %d entries of %s (%d numbers) as given%s"
+            % (args.run, len(given) - len(changed), args.given, nNumbers,
+               ", changed as asked: " + " ".join(sorted(changed))
+               if changed else ""))
+    if bad or missing:
+        text = ("%s: differ from %s: %s%s" % (
+            args.run, args.given, "; ".join(
+                "%s %s -> %s" % (k, " ".join(given[k]),
+                                 " ".join(run.get(k, ["(none)"])))
+                for k in bad[:5]),
+            "; changed keys missing: " + " ".join(missing) if missing
+            else ""))
+    return report(not bad and not missing, args.name or "dictionary", text)
+
+
 def main():
     ap = argparse.ArgumentParser(
         description="Checks of single-wing drone runs (PASS/FAIL lines)")
@@ -296,6 +353,12 @@ def main():
     p.add_argument("--qDotSign", default=None)
     p.add_argument("--tol", type=float, default=1e-12)
     p.set_defaults(func=checkInitial)
+
+    p = sub.add_parser("dictionary")
+    p.add_argument("run")
+    p.add_argument("given")
+    p.add_argument("--changed", nargs="*", default=[])
+    p.set_defaults(func=checkDictionary)
 
     p = sub.add_parser("rbs")
     p.add_argument("a")

@@ -21,7 +21,8 @@ from flapfoam.wingMesh import (LEVELS, checkBlockSides, levelComponent,
 
 
 def parseArgs(doc, levels, argv=None):
-    """meshGen.py <level> [-o DIR] [--phi DEG] [--alpha DEG] | --list"""
+    """meshGen.py <level> [-o DIR] [--phi DEG] [--alpha DEG] | --list |
+    --levels (the level names, one a line: Allrun's -level checks)"""
     ap = argparse.ArgumentParser(description=doc.split("\n\n")[0])
     ap.add_argument("level", nargs="?", choices=list(levels))
     ap.add_argument("-o", "--output", default="mesh",
@@ -32,7 +33,12 @@ def parseArgs(doc, levels, argv=None):
                     help="initial pitching angle of the wing [deg]")
     ap.add_argument("--list", action="store_true",
                     help="print the planned cell counts of every level")
+    ap.add_argument("--levels", action="store_true",
+                    help="print the level names, one a line, and stop")
     args = ap.parse_args(argv)
+    if args.levels:
+        print("\n".join(levels))
+        sys.exit(0)
     if not args.list and args.level is None:
         ap.error("level required")
     return args
