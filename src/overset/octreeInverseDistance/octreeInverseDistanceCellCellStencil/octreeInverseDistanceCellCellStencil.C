@@ -200,6 +200,18 @@ void Foam::cellCellStencils::octreeInverseDistance::readSearchBox()
             << exit(FatalIOError);
     }
 
+    if (Pstream::parRun() && !(useSearchBox_ && useDivisions_))
+    {
+        Info<< typeName << " : parallel run without searchBox and"
+            << " searchBoxDivisions in " << dict_.name() << ": the hole"
+            << " test's voxels span each zone's whole box, divisions from"
+            << " the whole mesh's cell count (the serial run's grid); the"
+            << " stock inverseDistance takes each rank's own box and cells,"
+            << " so its holes depend on the decomposition and can differ"
+            << " from these by a voxel near walls.  Give searchBox and"
+            << " searchBoxDivisions for one grid in both" << endl;
+    }
+
     // The voxel index must fit in a label
     const scalar nVoxels =
         scalar(divisions_.x())*scalar(divisions_.y())*scalar(divisions_.z());

@@ -78,9 +78,13 @@ Foam::cellCellStencils::octreeInverseDistance::voxelDivisions() const
         return divisions_;
     }
 
-    // As the stock stencil: about one voxel a cell
+    // As the stock stencil, about one voxel a cell, but of the whole mesh:
+    // the grid must be the same on every rank (the PATCH voxels travel as
+    // indices), and it is then the serial run's grid.  (The stock stencil
+    // takes each rank's own cells and box: its holes in parallel depend on
+    // the decomposition; see readSearchBox.)
     const label nD = mesh_.nGeometricD();
-    const scalar n = scalar(mesh_.nCells());
+    const scalar n = scalar(returnReduce(mesh_.nCells(), sumOp<label>()));
     const label nDivs =
         nD == 1 ? label(n) : nD == 2 ? label(Foam::sqrt(n))
       : label(Foam::cbrt(n));
