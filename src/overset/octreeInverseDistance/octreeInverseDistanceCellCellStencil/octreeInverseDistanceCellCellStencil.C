@@ -294,23 +294,22 @@ void Foam::cellCellStencils::octreeInverseDistance::fitZones()
             buildZone(zonei, zoneID);
             fullReason_ = "zone " + Foam::name(zonei) + " rebuilt";
         }
-        else if (nearlyRigid(zonei))
+        else if (nearlyRigid(zonei) && !nearlyRigidSaid_[zonei])
         {
-            // The current-point checks use the mesh's tet base points:
-            // collective when first built (the residual is the same on
-            // every rank)
+            nearlyRigidSaid_[zonei] = true;
+            Info<< type() << " : zone " << zonei << " moves only nearly"
+                << " rigidly (rigid-fit residual " << residual
+                << " = " << residual/size << " of its size, above"
+                << " round-off " << roundOffResidual << ", below"
+                << " rigidTolerance " << rigidTolerance_ << "): its"
+                << " donors are checked against the current points" << endl;
+        }
+        if (nearlyRigid(zonei))
+        {
+            // The current-point checks (also of a rebuilt zone) use the
+            // mesh's tet base points: collective when first built (the
+            // residual is the same on every rank)
             (void)mesh_.tetBasePtIs();
-            if (!nearlyRigidSaid_[zonei])
-            {
-                nearlyRigidSaid_[zonei] = true;
-                Info<< type() << " : zone " << zonei << " moves only nearly"
-                    << " rigidly (rigid-fit residual " << residual
-                    << " = " << residual/size << " of its size, above"
-                    << " round-off " << roundOffResidual << ", below"
-                    << " rigidTolerance " << rigidTolerance_ << "): its"
-                    << " donors are checked against the current points"
-                    << endl;
-            }
         }
 
         treeBoundBox& zoneBb = ws_.zoneBb[zonei][0];
