@@ -18,6 +18,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402,F401  (the plot modules' plt)
 
+from flapfoam.stepTimers import read_input  # noqa: E402
+
 PLOT_STEP_TIMERS = os.path.join(
     os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
     "plotStepTimers.py")
@@ -74,6 +76,10 @@ def stepTimers(case, out, label):
     scripts/plotStepTimers.py; its exit status."""
     timers = os.path.join(case, "postProcessing", "stepTimers")
     if not os.path.isdir(timers):
+        return 0
+    if len(read_input(timers, 2)[1]) == 0:
+        print("plotRun: no step-timer plot: no step after the 2 start-up"
+              " steps")
         return 0
     return subprocess.call([sys.executable, PLOT_STEP_TIMERS, timers, "-o",
                             os.path.join(out, "stepTimers.png"), "-l",
