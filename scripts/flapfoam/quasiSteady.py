@@ -13,13 +13,19 @@ the two translations, so with the wing's rotations prescribed
 is exact; the force is the blade elements' at the wing's current motion.
 
     python3 -m flapfoam.quasiSteady DYNAMICMESHDICT -cycles 5 -out FILE
+        [-compare JOINTS.DAT -tol 1e-3]
 
-writes t x z xDot zDot (one row per output step) from rest at t = 0.
+writes t x z xDot zDot (one row per output step) from rest at t = 0; with
+-compare, the x(t), z(t) of a rigidBodySimulate run's joints.dat (columns
+time q_0 qDot_0 qDdot_0 q_1 ...: q_0 heave z, q_1 surge x) at its rows,
+and a non-zero exit if either differs by more than tol times the
+reference's range over the run.
 numpy and scipy.
 """
 
 import argparse
 import math
+import sys
 
 import numpy as np
 from scipy.integrate import solve_ivp
@@ -124,13 +130,34 @@ def main():
     parser.add_argument("-dt", type=float, default=1e-4,
                         help="output interval [s]")
     parser.add_argument("-out", required=True)
+    parser.add_argument("-compare", metavar="JOINTS.DAT")
+    parser.add_argument("-tol", type=float, default=1e-3)
     args = parser.parse_args()
     if args.cycles <= 0 or args.dt <= 0:
         parser.error("-cycles %g, -dt %g: both must be positive"
                      % (args.cycles, args.dt))
     drone = SingleWingDrone(multibodyCoeffs(args.dict))
     endTime = args.cycles/drone.phi.frequency
-    np.savetxt(args.out, drone.fly(endTime, args.dt), header="t x z xDot zDot")
+    ref = drone.fly(endTime, args.dt)
+    np.savetxt(args.out, ref, header="t x z xDot zDot")
+    if args.compare:
+        sys.exit(0 if compare(ref, np.loadtxt(args.compare), args.tol)
+                 else 1)
+
+
+def compare(ref, run, tol):
+    """x, z of a joints.dat (rows of run) against the reference, relative
+    to the reference's range; True if both within tol."""
+    ok = True
+    for name, col, refCol in (("z", 1, 2), ("x", 4, 1)):
+        value = np.interp(run[:, 0], ref[:, 0], ref[:, refCol])
+        scale = ref[:, refCol].max() - ref[:, refCol].min()
+        err = np.abs(run[:, col] - value).max()/scale
+        print("quasiSteady: %s: max |run - reference| = %.3g of its range"
+              " %.4g m (tol %g) over %d rows to t = %g s"
+              % (name, err, scale, tol, len(run), run[-1, 0]))
+        ok = ok and err <= tol
+    return ok
 
 
 if __name__ == "__main__":
