@@ -1,0 +1,81 @@
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
+"""
+Synthetic flight data of the single-wing drone for the qsCalibrate test:
+the tree flown from rest by the independent quasi-steady reference
+(flapfoam.quasiSteady.SingleWingDrone) with the chosen CL, CD0, CD1, and
+its wing's rows as the flightData function object writes them (centre of
+mass position and velocity, from the dictionary's centreOfMass, row-major
+orientation, angular velocity, force; the first row's loads NaN).
+
+    python3 syntheticFlightData.py CASE -CL A -CD0 B -CD1 C
+        [-cycles N] [-dt DT] [-noForce]
+
+reads CASE/constant/dynamicMeshDict and writes
+CASE/postProcessing/flightData/0/flightData.h5 (-noForce: without
+bodies/wing/force).  numpy, scipy and h5py.
+"""
+
+import argparse
+import os
+
+import h5py
+import numpy as np
+
+from flapfoam.foamDict import multibodyCoeffs
+from flapfoam.quasiSteady import SingleWingDrone, rotation, vec
+
+
+def wingRows(drone, states, centre):
+    """{dataset: rows} of the wing along the flown states (t x z xDot
+    zDot)."""
+    d = {k: [] for k in ("orientation", "position", "velocity",
+                         "angularVelocity", "force")}
+    for t, x, z, xDot, zDot in states:
+        phi, phiDot, _ = drone.phi(t)
+        alpha, alphaDot, _ = drone.alpha(t)
+        Rz = rotation("z", float(phi))
+        E = Rz @ rotation("y", float(alpha))
+        omega = np.array([0, 0, float(phiDot)]) \
+            + float(alphaDot)*(Rz @ np.array([0, 1, 0]))
+        origin, vOrigin = np.array([x, 0, z]), np.array([xDot, 0, zDot])
+        F, _ = drone.wing.force(E, origin, vOrigin, omega)
+        d["orientation"].append(E.reshape(9))
+        d["position"].append(origin + E @ centre)
+        d["velocity"].append(vOrigin + np.cross(omega, E @ centre))
+        d["angularVelocity"].append(omega)
+        d["force"].append(F)
+    d = {k: np.array(v) for k, v in d.items()}
+    d["force"][0] = np.nan
+    return d
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("case")
+    for k in ("CL", "CD0", "CD1"):
+        parser.add_argument("-" + k, type=float, required=True)
+    parser.add_argument("-cycles", type=float, default=1)
+    parser.add_argument("-dt", type=float, default=1e-4)
+    parser.add_argument("-noForce", action="store_true")
+    args = parser.parse_args()
+    coeffs = multibodyCoeffs(os.path.join(args.case, "constant",
+                                          "dynamicMeshDict"))
+    drone = SingleWingDrone(coeffs)
+    drone.wing.CL, drone.wing.CD0, drone.wing.CD1 = args.CL, args.CD0, \
+        args.CD1
+    states = drone.fly(args.cycles/drone.phi.frequency, args.dt)
+    centre = vec(coeffs["bodies"]["wing"]["centreOfMass"])
+    d = wingRows(drone, states, centre)
+    folder = os.path.join(args.case, "postProcessing", "flightData", "0")
+    os.makedirs(folder, exist_ok=True)
+    with h5py.File(os.path.join(folder, "flightData.h5"), "w") as f:
+        f["time"] = states[:, 0]
+        for k, v in d.items():
+            if not (args.noForce and k == "force"):
+                f["bodies/wing/" + k] = v
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,270 @@
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
+"""
+Calibrates the quasi-steady wing (bodyLoad aerodynamics, type quasiSteady)
+on a CFD run, as Lee et al. (2016) did on Fluent runs: the coefficients
+CL, CD0, CD1 fitted to the run's fluid force on the wing by linear least
+squares.
+
+    python3 -m flapfoam.qsCalibrate CASE [-dict DICT] [-wing NAME]
+        [-skip N] [-components xz|xyz] [-out FILE]
+
+The blade-element force is linear in the coefficients: per strip
+    dF = 0.5 rho |u_perp|^2 c dr (CL sin(2a) e_L + (CD0 + CD1 (1 - cos 2a)) e_D)
+so each row of the run's flight data (postProcessing/flightData/<start>/
+flightData.h5: bodies/<body>/orientation, position, velocity,
+angularVelocity of the wing's body, and its fluid force) gives three basis
+forces, those of (CL, CD0, CD1) = (1, 0, 0), (0, 1, 0), (0, 0, 1), from
+the strips' velocities v_k = v_origin + omega x arm (v_origin, that of the
+body frame's origin, from the centre of mass's velocity and the angular
+velocity; the centre of mass from the dictionary's body).  The measured
+force components (x and z, or all three) of every row are fitted by one
+least-squares problem.
+
+DICT (default CASE/constant/dynamicMeshDict) holds the aerodynamics entry
+(NAME: default its only entry); -skip N leaves out the first N steps (the
+start-up transient; the initial-state row, whose loads are not computed,
+is always left out).  Prints the fit (coefficients, R^2 and the RMS
+residual relative to the force's range per component, the condition
+number), the mean vertical force of the CFD, of the fitted QS and of the
+QS with Wang's defaults (over the whole flapping cycles of the fitted rows,
+or over all of them when they cover less than a cycle), and the entry to
+paste (the dictionary's entry with the fitted CL, CD0, CD1; -out FILE also
+writes it there).  numpy and h5py.
+"""
+
+import argparse
+import copy
+import os
+import re
+import sys
+
+import numpy as np
+
+from flapfoam.flightData import find
+from flapfoam.foamDict import multibodyCoeffs
+from flapfoam.quasiSteady import Wing, vec
+
+COEFFS = ("CL", "CD0", "CD1")
+
+
+def fail(message):
+    sys.exit("qsCalibrate: " + message)
+
+
+def wingEntry(path, name):
+    """(name, entry, multibody coefficients) of the dictionary's
+    aerodynamics entry NAME (None: its only one)."""
+    if not os.path.isfile(path):
+        fail("no dictionary %s (give -dict DICT: a dynamicMeshDict with an"
+             " aerodynamics entry)" % path)
+    coeffs = multibodyCoeffs(path)
+    aero = coeffs.get("aerodynamics")
+    entries = {k: v for k, v in aero.items() if isinstance(v, dict)} \
+        if isinstance(aero, dict) else {}
+    if not entries:
+        fail("%s: no aerodynamics entry with a wing (e.g. the drone cases'"
+             " constant/dynamicMeshDict.eABA has one: -dict)" % path)
+    if name is None and len(entries) > 1:
+        fail("%s: aerodynamics has %d wings (%s): choose one with -wing"
+             % (path, len(entries), ", ".join(entries)))
+    name = name or next(iter(entries))
+    if name not in entries:
+        fail("%s: -wing %s: no such aerodynamics entry (allowed: %s)"
+             % (path, name, ", ".join(entries)))
+    return name, entries[name], coeffs
+
+
+class FlightRows:
+    """The rows of a run's flight data used in the fit: the wing body's
+    motion (body frame origin) and the fluid force on it."""
+
+    KEYS = ("orientation", "position", "velocity", "angularVelocity",
+            "force")
+
+    def __init__(self, case, body, centreOfMass, skip):
+        import h5py
+        path = find(case)
+        if path is None:
+            fail("no postProcessing/flightData/*/flightData.h5 in %s (a CFD"
+                 " run's flight data)" % case)
+        self.path = path
+        with h5py.File(path, "r") as f:
+            missing = ["bodies/%s/%s" % (body, k) for k in self.KEYS
+                       if "bodies/%s/%s" % (body, k) not in f]
+            if missing or "time" not in f:
+                fail("%s: no %s (the motion and fluid force of body %s);"
+                     " its bodies: %s"
+                     % (path, ", ".join(missing or ["time"]), body,
+                        ", ".join(f.get("bodies", {}).keys()) or "none"))
+            d = {k: f["bodies/%s/%s" % (body, k)][()] for k in self.KEYS}
+            t = f["time"][()]
+        self.select(t, d, skip)
+        E = d["orientation"][self.rows].reshape(-1, 3, 3)
+        arm = E @ centreOfMass
+        self.E, self.omega = E, d["angularVelocity"][self.rows]
+        self.origin = d["position"][self.rows] - arm
+        self.vOrigin = d["velocity"][self.rows] \
+            - np.cross(self.omega, arm)
+        self.force = d["force"][self.rows]
+        self.time = t[self.rows]
+
+    def select(self, t, d, skip):
+        """self.rows: the rows after the initial state and -skip steps."""
+        first = 1 if np.isnan(d["force"][0]).any() else 0
+        n = len(t) - first
+        if skip < 0 or skip > n - 3:
+            fail("%s: -skip %d: allowed 0 to %d (the file has %d steps"
+                 " after its initial state, t = %g to %g s; the fit needs"
+                 " at least 3)" % (self.path, skip, max(n - 3, 0), n,
+                                   t[0], t[-1]))
+        self.rows = np.arange(first + skip, len(t))
+        finite = np.all([np.isfinite(d[k][self.rows]).reshape(
+            len(self.rows), -1).all(axis=1) for k in self.KEYS], axis=0)
+        bad = np.flatnonzero(~finite)
+        if len(bad):
+            fail("%s: %d rows with NaN/inf motion or force from t = %g s"
+                 " (allowed: only the initial state)"
+                 % (self.path, len(bad), t[self.rows[bad[0]]]))
+
+
+def basisForces(wing, rows):
+    """(rows, 3 coefficients, 3 components): the wing's force per unit
+    CL, CD0, CD1 at every row."""
+    unit = copy.copy(wing)
+    basis = np.empty((len(rows.time), 3, 3))
+    for j, coefficient in enumerate(COEFFS):
+        for k in COEFFS:
+            setattr(unit, k, 1.0 if k == coefficient else 0.0)
+        for i in range(len(rows.time)):
+            basis[i, j], _ = unit.force(rows.E[i], rows.origin[i],
+                                        rows.vOrigin[i], rows.omega[i])
+    return basis
+
+
+def fit(basis, force, components):
+    """(coefficients, condition number): least squares over the rows and
+    the components (indices)."""
+    A = basis[:, :, components].transpose(0, 2, 1).reshape(-1, 3)
+    b = force[:, components].reshape(-1)
+    scale = np.linalg.norm(A, axis=0)
+    if np.any(scale == 0):
+        fail("the wing's motion gives no %s force in the fitted rows:"
+             " nothing to fit (a wing at rest?)"
+             % "/".join(c for c, s in zip(COEFFS, scale) if s == 0))
+    x, _, rank, sv = np.linalg.lstsq(A/scale, b, rcond=None)
+    if rank < 3:
+        fail("CL, CD0, CD1 cannot be told apart over the fitted rows (rank"
+             " %d of 3): fit over more of a cycle (-skip, a longer run)"
+             % rank)
+    return x/scale, sv[0]/sv[-1]
+
+
+def quality(model, force, components):
+    """Per component: (R^2, RMS residual / range of the force)."""
+    out = []
+    for c in components:
+        res = force[:, c] - model[:, c]
+        spread = np.sum((force[:, c] - force[:, c].mean())**2)
+        span = np.ptp(force[:, c])
+        out.append((1 - np.sum(res**2)/spread if spread > 0 else np.nan,
+                    np.sqrt(np.mean(res**2))/span if span > 0 else np.nan))
+    return out
+
+
+def cycleRows(time, coeffs):
+    """(rows of the whole flapping cycles at the end of time, text): all
+    rows when they cover less than one cycle (or no frequency)."""
+    f = [float(e["frequency"][0])
+         for e in coeffs.get("imposedMotion", {}).values()
+         if isinstance(e, dict) and "frequency" in e]
+    dt = time[1] - time[0] if len(time) > 1 else 0
+    span = time[-1] - time[0] + dt
+    if not f:
+        return slice(None), "over the fitted rows (no imposedMotion" \
+            " frequency)"
+    period = 1/min(f)
+    cycles = int(np.floor(span/period + 1e-9))
+    if cycles < 1:
+        return slice(None), ("over the fitted rows, %.3g of a cycle of %g s:"
+                             " not a cycle mean" % (span/period, period))
+    keep = time > time[-1] - cycles*period + 0.5*dt
+    return keep, "over the last %d whole cycle(s) of %g s" % (cycles, period)
+
+
+def entryText(name, entry, values):
+    """The aerodynamics entry NAME with the fitted coefficients."""
+    lines = ["    %s" % name, "    {"]
+    keys = list(entry) + [k for k in COEFFS if k not in entry]
+    for key in keys:
+        if key in COEFFS:
+            text = "%.8g" % values[COEFFS.index(key)]
+        else:
+            text = re.sub(r"\(\s+", "(", " ".join(entry[key]))
+            text = re.sub(r"\s+\)", ")", text)
+        lines.append("        %-11s %s;" % (key, text))
+    lines.append("    }")
+    return "\n".join(lines)
+
+
+def report(args, rows, name, entry, coeffs):
+    """Fit, print the report and the entry; returns the entry's text."""
+    components = ["xyz".index(c) for c in args.components]
+    basis = basisForces(Wing(entry), rows)
+    fitted, cond = fit(basis, rows.force, components)
+    defaults = Wing({k: v for k, v in entry.items() if k not in COEFFS})
+    wang = np.array([defaults.CL, defaults.CD0, defaults.CD1])
+    keep, over = cycleRows(rows.time, coeffs)
+    meanZ = rows.force[keep, 2].mean()
+    print("qsCalibrate: %s, body %s, %d rows t = %g to %g s, components %s"
+          % (rows.path, entry["body"][0], len(rows.time),
+             rows.time[0], rows.time[-1], " ".join(args.components)))
+    print("fitted: CL %.8g CD0 %.8g CD1 %.8g (condition number %.3g)"
+          % (tuple(fitted) + (cond,)))
+    print("mean F_z %s: run %.6g N" % (over, meanZ))
+    for label, x in (("fitted", fitted), ("Wang's defaults", wang)):
+        model = np.einsum("j,ijk->ik", x, basis)
+        q = quality(model, rows.force, components)
+        print("QS %s (CL %.4g CD0 %.4g CD1 %.4g): %s; mean F_z %.6g N ="
+              " %.4f of the run's"
+              % ((label,) + tuple(x) + ("; ".join(
+                  "%s: R^2 %.6f, RMS residual %.3g of the range"
+                  % (args.components[i], r2, rms)
+                  for i, (r2, rms) in enumerate(q)),
+                  model[keep, 2].mean(), model[keep, 2].mean()/meanZ)))
+    text = entryText(name, entry, fitted)
+    print("The entry to paste (aerodynamics of %s):\n%s" % (args.dict, text))
+    return text
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("case", help="a CFD run with flight data")
+    parser.add_argument("-dict", help="dynamicMeshDict with the aerodynamics"
+                        " entry (default CASE/constant/dynamicMeshDict)")
+    parser.add_argument("-wing", help="the aerodynamics entry (default: its"
+                        " only one)")
+    parser.add_argument("-skip", type=int, default=0,
+                        help="steps left out at the start (default 0)")
+    parser.add_argument("-components", choices=("xz", "xyz"), default="xz")
+    parser.add_argument("-out", help="also write the entry to this file")
+    args = parser.parse_args()
+    args.dict = args.dict or os.path.join(args.case, "constant",
+                                          "dynamicMeshDict")
+    name, entry, coeffs = wingEntry(args.dict, args.wing)
+    body = entry.get("body", ["?"])[0]
+    if body not in coeffs.get("bodies", {}):
+        fail("%s: aerodynamics/%s: body %s is not a body of the tree"
+             " (allowed: %s)" % (args.dict, name, body,
+                                 ", ".join(coeffs.get("bodies", {}))))
+    centre = vec(coeffs["bodies"][body].get("centreOfMass", ["0", "0", "0"]))
+    rows = FlightRows(args.case, body, centre, args.skip)
+    text = report(args, rows, name, entry, coeffs)
+    if args.out:
+        with open(args.out, "w") as f:
+            f.write(text + "\n")
+
+
+if __name__ == "__main__":
+    main()
