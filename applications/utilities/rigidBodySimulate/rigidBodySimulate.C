@@ -57,11 +57,25 @@ Description
         (tau, power for each prescribed joint j: the actuator force on top
         of the applied joint force, and tau*qDot) and one row per write
         time, including startTime, flushed as it is written;
-      - <endTime>/uniform/rigidBodyMotionState: the state to restart from.
+      - <endTime>/uniform/rigidBodyMotionState: the state to restart from;
+      - what the function objects of controlDict write (functions: the
+        drone cases' flightData, stepTimers, runProgress), executed after
+        every step as in a flow run: the model, its bodies and their loads
+        are published (RBD::motionRecord) on a registry region0 without a
+        mesh, so flightData writes the flow runs' file,
+            postProcessing/flightData/<startTime>/flightData.h5,
+        for the bodies with patches or a cellZone (those of a flow run)
+        and those carrying a wing of the aerodynamics entry; force and
+        moment: the load of the step's last sub-iteration (the wing's
+        aerodynamic load; zero on a body without one), coefficients with
+        the reference values of the flightData entry; timers: "rbd" is the
+        step's multibody solve (stamped as a flow run's mesh update).  The functionObjectProperties
+        state dictionary is not written (no time folder but the end's);
+        -noFunctionObjects runs none.
 
 Usage
     \b rigidBodySimulate [-case DIR] [-dict FILE] [-solver NAME]
-        [-bodyLoad vacuum|aerodynamics]
+        [-bodyLoad vacuum|aerodynamics] [-noFunctionObjects]
 
 \*---------------------------------------------------------------------------*/
 
@@ -74,6 +88,9 @@ Usage
 #include "multibodyDict.H"
 #include "runInputCheck.H"
 #include "bodyLoad.H"
+#include "motionRecord.H"
+#include "stepTimers.H"
+#include "polyMesh.H"
 
 using namespace Foam;
 
@@ -221,8 +238,60 @@ void writeTime
 }
 
 
-// Plain time loop: Time::run() would execute the function objects and
-// write their state dictionary at every write time
+// The bodies the output reports, in the order of the bodies dictionary:
+// those with patches or a cellZone (a flow run's: the same datasets) and
+// those that carry a wing of the aerodynamics entry
+wordList reportedBodies(const dictionary& modelDict)
+{
+    wordHashSet wings;
+    const dictionary* aero = modelDict.findDict("aerodynamics");
+    if (aero)
+    {
+        for (const entry& e : *aero)
+        {
+            if (e.isDict())
+            {
+                wings.insert(e.dict().get<word>("body"));
+            }
+        }
+    }
+
+    DynamicList<word> names;
+    for (const entry& e : modelDict.subDict("bodies"))
+    {
+        if
+        (
+            e.isDict()
+         && (
+                e.dict().found("patches")
+             || e.dict().found("cellZone")
+             || wings.found(e.keyword())
+            )
+        )
+        {
+            names.append(e.keyword());
+        }
+    }
+    return wordList(std::move(names));
+}
+
+
+// The function objects of a step, as functionObjectList::execute but for
+// the state dictionary it writes at every write time (a time folder each)
+void executeFunctionObjects(Time& runTime)
+{
+    functionObjectList& functions = runTime.functionObjects();
+    for (label i = 0; i < functions.size(); ++i)
+    {
+        functions[i].execute();
+        functions[i].write();
+    }
+}
+
+
+// Plain time loop (not Time::run(), see executeFunctionObjects): each step
+// solved (the "rbd" step timer), its function objects, its row of
+// joints.dat at a write time
 void timeLoop
 (
     Time& runTime,
@@ -238,18 +307,30 @@ void timeLoop
     {
         ++runTime;
 
-        model.newTime();
-        for (label iter = 0; iter < model.nIter(); ++iter)
+        // The solve in place of a flow run's mesh update (its stamps: the
+        // step timers' pimple column is then the function objects before
+        // stepTimers, their preUpdate the loop's own work)
+        stepTimers& timers = stepTimers::New(runTime);
+        timers.stamp(stepTimers::meshUpdateStart);
         {
-            // The loads of the current estimate of the new state
-            model.solve
-            (
-                runTime.value(),
-                runTime.deltaTValue(),
-                tau,
-                loads.of(model.state())
-            );
+            stepTimers::scope timer(timers, "rbd");
+
+            model.newTime();
+            for (label iter = 0; iter < model.nIter(); ++iter)
+            {
+                // The loads of the current estimate of the new state
+                model.solve
+                (
+                    runTime.value(),
+                    runTime.deltaTValue(),
+                    tau,
+                    loads.of(model.state())
+                );
+            }
         }
+        timers.stamp(stepTimers::meshUpdated);
+
+        executeFunctionObjects(runTime);
 
         if (runTime.writeTime())
         {
@@ -309,6 +390,26 @@ int main(int argc, char *argv[])
     model.state().t() = runTime.value();
     initialiseState(model, tau, loads);
 
+    // The model, its bodies and their loads for controlDict's function
+    // objects (flightData), on a registry without a mesh
+    objectRegistry region
+    (
+        IOobject
+        (
+            polyMesh::defaultRegion,
+            runTime.timeName(),
+            runTime,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        )
+    );
+    const RBD::motionRecord record
+    (
+        region, model, loads.fx, reportedBodies(modelDict),
+        model.freshStart()
+    );
+    runTime.functionObjects().start();
+
     // Output table
     const fileName outputDir
     (
@@ -326,6 +427,7 @@ int main(int argc, char *argv[])
 
     timeLoop(runTime, model, tau, loads, os);
 
+    runTime.functionObjects().end();
     model.writeState(runTime);
 
     Info<< nl << "Wrote " << os.name() << nl

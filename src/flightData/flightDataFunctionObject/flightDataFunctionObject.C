@@ -109,12 +109,13 @@ Foam::functionObjects::flightData::findMotion() const
 {
     const HashTable<const RBD::motionRecord*> records
     (
-        mesh_.lookupClass<RBD::motionRecord>()
+        obr_.lookupClass<RBD::motionRecord>()
     );
     if (records.size() != 1)
     {
         FatalErrorInFunction
-            << type() << " " << name() << ": the mesh has " << records.size()
+            << type() << " " << name() << ": the registry " << obr_.name()
+            << " has " << records.size()
             << " multibody motions (" << RBD::motionRecord::typeName
             << "); flightData needs exactly one"
             << " (dynamicMeshDict: motionSolver eABAMeshMotion)"
@@ -197,10 +198,12 @@ Foam::functionObjects::flightData::attributes(const scalar startTime) const
 
     a.append(Tuple2<word, string>("case", time_.globalCaseName()));
 
+    // The overset stencil of a flow run ("none" without a mesh)
     word stencil("none");
-    if (mesh_.schemesDict().found("oversetInterpolation"))
+    const fvMesh* mesh = isA<fvMesh>(obr_);
+    if (mesh && mesh->schemesDict().found("oversetInterpolation"))
     {
-        mesh_.schemesDict().subDict("oversetInterpolation")
+        mesh->schemesDict().subDict("oversetInterpolation")
             .readIfPresent("method", stencil);
     }
     a.append(Tuple2<word, string>("stencil", stencil));
@@ -347,7 +350,7 @@ Foam::functionObjects::flightData::flightData
     const dictionary& dict
 )
 :
-    fvMeshFunctionObject(name, runTime, dict),
+    regionFunctionObject(name, runTime, dict),
     rhoInf_(0),
     Uref_(0),
     motion_(nullptr)
@@ -410,7 +413,7 @@ Foam::functionObjects::flightData::flightData
 
 bool Foam::functionObjects::flightData::read(const dictionary& dict)
 {
-    fvMeshFunctionObject::read(dict);
+    regionFunctionObject::read(dict);
     functionObjectKeys::check
     (
         dict,
