@@ -1,0 +1,74 @@
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
+"""
+The paper's integrator study on the quasi-steady model: the single-wing
+drone (its dictionary unchanged but for the integrator) flown from rest for
+N cycles by rigidBodySimulate -bodyLoad aerodynamics with Newmark (nIter 1
+and 3) and symplectic (nIter 1 and 3) at several time steps; the final
+positions x, z against Newmark nIter 3 at the same step and against a
+converged reference (Newmark nIter 3, the finest step / 4).
+
+    python3 bench/quasiSteady/integrators.py -dict FILE -cycles 20
+        -steps "500 5000" -dir DIR -o TABLE.md
+
+Writes a markdown table (differences in mm and in % of the reference's
+|x|, |z|) and prints it.
+"""
+
+import argparse
+import os
+
+from flapfoam.qsSweep import Model, Sweep
+
+INTEGRATORS = (("Newmark", 1), ("Newmark", 3), ("symplectic", 1),
+               ("symplectic", 3))
+
+
+def flight(args, solver, nIter, steps):
+    """(xEnd, zEnd, seconds) of one run."""
+    work = os.path.join(args.dir, "%s-%d-%d" % (solver, nIter, steps))
+    os.makedirs(work, exist_ok=True)
+    model = Model(args.dict, work, solver, nIter)
+    row = Sweep(model, work, args.cycles, steps).run("run", {})
+    return row["xEnd"], row["zEnd"], row["seconds"]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("-dict", required=True)
+    parser.add_argument("-cycles", type=int, default=20)
+    parser.add_argument("-steps", default="500 5000",
+                        help="time steps per cycle")
+    parser.add_argument("-dir", required=True)
+    parser.add_argument("-o", required=True)
+    args = parser.parse_args()
+    steps = [int(s) for s in args.steps.split()]
+    xRef, zRef, _ = flight(args, "Newmark", 3, 4*max(steps))
+    lines = [
+        "| integrator | nIter | steps/cycle | x(T) [mm] | z(T) [mm] |"
+        " x - Newmark 3 [mm] (%) | z - Newmark 3 [mm] (%) |"
+        " x - converged (%) | z - converged (%) | run [s] |",
+        "|---|---|---|---|---|---|---|---|---|---|"]
+    for n in steps:
+        runs = {(s, i): flight(args, s, i, n) for s, i in INTEGRATORS}
+        xN, zN, _ = runs[("Newmark", 3)]
+        for (s, i), (x, z, sec) in runs.items():
+            lines.append(
+                "| %s | %d | %d | %.3f | %.3f | %+.4f (%.3f) | %+.4f (%.3f)"
+                " | %.3f | %.3f | %.2f |"
+                % (s, i, n, 1e3*x, 1e3*z, 1e3*(x - xN),
+                   100*abs(x - xN)/abs(xN), 1e3*(z - zN),
+                   100*abs(z - zN)/abs(zN), 100*abs(x - xRef)/abs(xRef),
+                   100*abs(z - zRef)/abs(zRef), sec))
+    lines.append("")
+    lines.append("Converged reference (Newmark nIter 3, %d steps per cycle):"
+                 " x(T) = %.4f mm, z(T) = %.4f mm."
+                 % (4*max(steps), 1e3*xRef, 1e3*zRef))
+    with open(args.o, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main()
