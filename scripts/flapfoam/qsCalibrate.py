@@ -11,7 +11,7 @@ squares.
         [-skip N] [-components xz|xyz] [-out FILE]
 
 The blade-element force is linear in the coefficients: per strip
-    dF = 0.5 rho |u_perp|^2 c dr (CL sin(2a) e_L + (CD0 + CD1 (1 - cos 2a)) e_D)
+    dF = 0.5 rho |u_perp|^2 c dr (CL sin 2a e_L + (CD0 + CD1 (1 - cos 2a)) e_D)
 so each row of the run's flight data (postProcessing/flightData/<start>/
 flightData.h5: bodies/<body>/orientation, position, velocity,
 angularVelocity of the wing's body, and its fluid force) gives three basis
@@ -20,12 +20,13 @@ the strips' velocities v_k = v_origin + omega x arm (v_origin, that of the
 body frame's origin, from the centre of mass's velocity and the angular
 velocity; the centre of mass from the dictionary's body).  The measured
 force components (x and z, or all three) of every row are fitted by one
-least-squares problem.
+least-squares problem, each row weighted by its time step (the run's
+steps may vary).
 
 DICT (default CASE/constant/dynamicMeshDict) holds the aerodynamics entry
 (NAME: default its only entry); -skip N leaves out the first N steps (the
-start-up transient; the initial-state row, whose loads are not computed,
-is always left out).  Prints the fit (coefficients, R^2 and the RMS
+start-up transient; the first row, the initial state whose loads are not
+computed, is always left out).  Prints the fit (coefficients, R^2 and the RMS
 residual relative to the force's range per component, the condition
 number), the mean vertical force of the CFD, of the fitted QS and of the
 QS with Wang's defaults (over the whole flapping cycles of the fitted rows,
@@ -109,17 +110,18 @@ class FlightRows:
             - np.cross(self.omega, arm)
         self.force = d["force"][self.rows]
         self.time = t[self.rows]
+        self.step = t[self.rows] - t[self.rows - 1]
 
     def select(self, t, d, skip):
-        """self.rows: the rows after the initial state and -skip steps."""
-        first = 1 if np.isnan(d["force"][0]).any() else 0
-        n = len(t) - first
+        """self.rows: the rows after the initial state and -skip steps;
+        every value finite."""
+        n = len(t) - 1
         if skip < 0 or skip > n - 3:
             fail("%s: -skip %d: allowed 0 to %d (the file has %d steps"
                  " after its initial state, t = %g to %g s; the fit needs"
                  " at least 3)" % (self.path, skip, max(n - 3, 0), n,
                                    t[0], t[-1]))
-        self.rows = np.arange(first + skip, len(t))
+        self.rows = np.arange(1 + skip, len(t))
         finite = np.all([np.isfinite(d[k][self.rows]).reshape(
             len(self.rows), -1).all(axis=1) for k in self.KEYS], axis=0)
         bad = np.flatnonzero(~finite)
@@ -143,11 +145,13 @@ def basisForces(wing, rows):
     return basis
 
 
-def fit(basis, force, components):
-    """(coefficients, condition number): least squares over the rows and
-    the components (indices)."""
-    A = basis[:, :, components].transpose(0, 2, 1).reshape(-1, 3)
-    b = force[:, components].reshape(-1)
+def fit(basis, rows, components):
+    """(coefficients, condition number): least squares over the rows (each
+    weighted by its time step) and the components (indices)."""
+    w = np.sqrt(rows.step)[:, None]
+    A = (basis[:, :, components]*w[:, :, None]).transpose(0, 2, 1) \
+        .reshape(-1, 3)
+    b = (rows.force[:, components]*w).reshape(-1)
     scale = np.linalg.norm(A, axis=0)
     if np.any(scale == 0):
         fail("the wing's motion gives no %s force in the fitted rows:"
@@ -161,26 +165,29 @@ def fit(basis, force, components):
     return x/scale, sv[0]/sv[-1]
 
 
-def quality(model, force, components):
-    """Per component: (R^2, RMS residual / range of the force)."""
+def quality(model, rows, components):
+    """Per component: (R^2, RMS residual / range of the force), means
+    weighted by the time steps."""
     out = []
     for c in components:
-        res = force[:, c] - model[:, c]
-        spread = np.sum((force[:, c] - force[:, c].mean())**2)
-        span = np.ptp(force[:, c])
-        out.append((1 - np.sum(res**2)/spread if spread > 0 else np.nan,
-                    np.sqrt(np.mean(res**2))/span if span > 0 else np.nan))
+        F = rows.force[:, c]
+        res = np.average((F - model[:, c])**2, weights=rows.step)
+        spread = np.average((F - np.average(F, weights=rows.step))**2,
+                            weights=rows.step)
+        span = np.ptp(F)
+        out.append((1 - res/spread if spread > 0 else np.nan,
+                    np.sqrt(res)/span if span > 0 else np.nan))
     return out
 
 
-def cycleRows(time, coeffs):
-    """(rows of the whole flapping cycles at the end of time, text): all
-    rows when they cover less than one cycle (or no frequency)."""
+def cycleRows(rows, coeffs):
+    """(rows of the whole flapping cycles at the end of the fitted ones,
+    text): all of them when they cover less than one cycle (or no
+    frequency)."""
     f = [float(e["frequency"][0])
          for e in coeffs.get("imposedMotion", {}).values()
          if isinstance(e, dict) and "frequency" in e]
-    dt = time[1] - time[0] if len(time) > 1 else 0
-    span = time[-1] - time[0] + dt
+    span = rows.time[-1] - rows.time[0] + rows.step[0]
     if not f:
         return slice(None), "over the fitted rows (no imposedMotion" \
             " frequency)"
@@ -189,7 +196,7 @@ def cycleRows(time, coeffs):
     if cycles < 1:
         return slice(None), ("over the fitted rows, %.3g of a cycle of %g s:"
                              " not a cycle mean" % (span/period, period))
-    keep = time > time[-1] - cycles*period + 0.5*dt
+    keep = rows.time - rows.step >= rows.time[-1] - (cycles + 1e-9)*period
     return keep, "over the last %d whole cycle(s) of %g s" % (cycles, period)
 
 
@@ -212,27 +219,34 @@ def report(args, rows, name, entry, coeffs):
     """Fit, print the report and the entry; returns the entry's text."""
     components = ["xyz".index(c) for c in args.components]
     basis = basisForces(Wing(entry), rows)
-    fitted, cond = fit(basis, rows.force, components)
+    fitted, cond = fit(basis, rows, components)
     defaults = Wing({k: v for k, v in entry.items() if k not in COEFFS})
     wang = np.array([defaults.CL, defaults.CD0, defaults.CD1])
-    keep, over = cycleRows(rows.time, coeffs)
-    meanZ = rows.force[keep, 2].mean()
+    keep, over = cycleRows(rows, coeffs)
+
+    def meanZ(F):
+        return np.average(F[keep, 2], weights=rows.step[keep])
+
     print("qsCalibrate: %s, body %s, %d rows t = %g to %g s, components %s"
           % (rows.path, entry["body"][0], len(rows.time),
              rows.time[0], rows.time[-1], " ".join(args.components)))
     print("fitted: CL %.8g CD0 %.8g CD1 %.8g (condition number %.3g)"
           % (tuple(fitted) + (cond,)))
-    print("mean F_z %s: run %.6g N" % (over, meanZ))
+    negative = [k for k, x in zip(COEFFS, fitted) if x < 0]
+    if negative:
+        print("note: %s < 0: not a flat plate's coefficients; the rows are"
+              " likely dominated by what the QS model lacks (added mass,"
+              " rotational forces, the start-up): fit over whole cycles"
+              % ", ".join(negative))
+    print("mean F_z %s: run %.6g N" % (over, meanZ(rows.force)))
     for label, x in (("fitted", fitted), ("Wang's defaults", wang)):
         model = np.einsum("j,ijk->ik", x, basis)
-        q = quality(model, rows.force, components)
+        fitText = "; ".join("%s: R^2 %.6f, RMS residual %.3g of the range"
+                            % (args.components[i], r2, rms) for i, (r2, rms)
+                            in enumerate(quality(model, rows, components)))
         print("QS %s (CL %.4g CD0 %.4g CD1 %.4g): %s; mean F_z %.6g N ="
-              " %.4f of the run's"
-              % ((label,) + tuple(x) + ("; ".join(
-                  "%s: R^2 %.6f, RMS residual %.3g of the range"
-                  % (args.components[i], r2, rms)
-                  for i, (r2, rms) in enumerate(q)),
-                  model[keep, 2].mean(), model[keep, 2].mean()/meanZ)))
+              " %.4f of the run's" % (label, *x, fitText, meanZ(model),
+                                       meanZ(model)/meanZ(rows.force)))
     text = entryText(name, entry, fitted)
     print("The entry to paste (aerodynamics of %s):\n%s" % (args.dict, text))
     return text

@@ -10,11 +10,12 @@ mass position and velocity, from the dictionary's centreOfMass, row-major
 orientation, angular velocity, force; the first row's loads NaN).
 
     python3 syntheticFlightData.py CASE -CL A -CD0 B -CD1 C
-        [-cycles N] [-dt DT] [-noForce]
+        [-cycles N] [-dt DT] [-thinAfter T] [-noForce]
 
 reads CASE/constant/dynamicMeshDict and writes
-CASE/postProcessing/flightData/0/flightData.h5 (-noForce: without
-bodies/wing/force).  numpy, scipy and h5py.
+CASE/postProcessing/flightData/0/flightData.h5 (-thinAfter: every other
+row after time T left out, steps of 2 DT as a run with a varying step;
+-noForce: without bodies/wing/force).  numpy, scipy and h5py.
 """
 
 import argparse
@@ -58,6 +59,7 @@ def main():
         parser.add_argument("-" + k, type=float, required=True)
     parser.add_argument("-cycles", type=float, default=1)
     parser.add_argument("-dt", type=float, default=1e-4)
+    parser.add_argument("-thinAfter", type=float, default=float("inf"))
     parser.add_argument("-noForce", action="store_true")
     args = parser.parse_args()
     coeffs = multibodyCoeffs(os.path.join(args.case, "constant",
@@ -66,6 +68,8 @@ def main():
     drone.wing.CL, drone.wing.CD0, drone.wing.CD1 = args.CL, args.CD0, \
         args.CD1
     states = drone.fly(args.cycles/drone.phi.frequency, args.dt)
+    late = states[:, 0] > args.thinAfter
+    states = states[~late | (np.cumsum(late) % 2 == 0)]
     centre = vec(coeffs["bodies"]["wing"]["centreOfMass"])
     d = wingRows(drone, states, centre)
     folder = os.path.join(args.case, "postProcessing", "flightData", "0")
