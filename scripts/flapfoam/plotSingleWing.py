@@ -99,7 +99,7 @@ def readRun(case, dictPath):
 
     print("plotRun: %d steps, t = %.6g ... %.6g s (%.3f cycles), %d restart "
           "folder(s)" % (len(t) - 1, t[0], t[-1], (t[-1] - t[0])*f,
-                         len(startFolders(base)) - 1))
+                         max(len(startFolders(base)) - 1, 0)))
     print("plotRun: S = %.6g m^2, R2 = %.6g m (about the flapping axis; "
           "quadrature %.6g), U_ref = 4 f A_phi R2 = %.6g m/s, rho = %g"
           % (S, R2, geo.radiusOfGyrationQuadrature(), Uref, rho))
