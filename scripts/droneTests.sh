@@ -1,7 +1,8 @@
 #------------------------------------------------------------------------------
 # flapFoam: shell functions of the drone cases' Alltest scripts (sourced).
 # Each prints PASS/FAIL lines "PASS [label] ..." and sets status=1 on a
-# failure: run, motionCycle, plots, result, flightData, vacuum.  Needs:
+# failure: run, motionCycle, plots, result, flightData, quasiSteady,
+# vacuum.  Needs:
 # python (Debian's python3), the case folder as the working directory,
 # runs/ (the logs), checkRun (the single-wing drone's scripts/checkRun.py).
 #------------------------------------------------------------------------------
@@ -188,6 +189,47 @@ flightData()
     "$python" "$projectScripts/flightData.py" "$@" \
         | sed -E "s/^(PASS|FAIL) /\1 [$label] /"
     [ "${PIPESTATUS[0]}" -eq 0 ] || status=1
+}
+
+# quasiSteady <label> <run folder> <rows> <Allrun options...>: Allrun
+# -model quasiSteady -noPlot -case <run folder> <options> completes (log
+# runs/log.Alltest.<label>); its flight data complete (<rows> rows,
+# attributes level none, stencil none, model quasiSteady, every value
+# finite after the start row) and the same times and q of every joint as
+# rigidBodySimulate's joints.dat (15 digits: the HDF5 values written so,
+# exactly equal)
+quasiSteady()
+{
+    local label="$1" dir="$2" rows="$3"
+    shift 3
+    local t0=$SECONDS log="runs/log.Alltest.$label"
+    if ./Allrun -model quasiSteady -noPlot -case "$dir" "$@" > "$log" 2>&1
+    then
+        echo "PASS [$label] Allrun -model quasiSteady $* completed" \
+            "($((SECONDS - t0)) s: $(grep -o 'in [0-9.]* s of wall' "$log"))"
+    else
+        echo "FAIL [$label] Allrun -model quasiSteady $* failed (see $log)"
+        status=1
+        return
+    fi
+    flightData "$label" check "$dir" --rows "$rows" --attr level=none \
+        --attr stencil=none --attr model=quasiSteady
+    PYTHONPATH="$projectScripts${PYTHONPATH:+:$PYTHONPATH}" "$python" -c "
+import sys, numpy as np
+from flapfoam import flightData
+_, d = flightData.load('$dir')
+j = np.loadtxt('$dir/postProcessing/rigidBodySimulate/0/joints.dat')
+n = d['joints/q'].shape[1]
+h = np.column_stack([d['time'], d['joints/q']])
+h = np.array([[float('%.15g' % v) for v in r] for r in h])
+cols = [0] + list(range(1, 3*n, 3))
+same = h.shape == (len(j), n + 1) and (h == j[:, cols]).all()
+bad = [k for k, v in d.items() if not np.isfinite(v[1:]).all()]
+print('%s [$label] flight data = joints.dat: %d rows, time and q_0..q_%d'
+      ' exactly (15 digits), final x = q_1 = %.6g m, z = q_0 = %.6g m;'
+      ' non-finite: %s' % ('PASS' if same and not bad else 'FAIL', len(h),
+      n - 1, h[-1, 2], h[-1, 1], bad or 'none'))
+sys.exit(0 if same and not bad else 1)" || status=1
 }
 
 # vacuum <label> <run folder> <tol>: rigidBodySimulate on a copy of the
