@@ -458,6 +458,17 @@ def mapPair(grid, text):
     return pair
 
 
+def hoverLine(param, r):
+    """The report of one hover row."""
+    if r["note"]:
+        return "no hover %s in the grid's range (%s)" % (param, r["note"])
+    return ("%s = %.9g: mean climb acceleration %.3g m/s^2, rate %.3g m/s,"
+            " force/weight %.6f, mean power %.4g W (%d runs)"
+            % (param, r[param], r["meanClimbAcceleration"],
+               r["meanClimbRate"], r["forceOverWeight"], r["meanPower"],
+               r["evaluations"]))
+
+
 def arguments(argv):
     parser = argparse.ArgumentParser(
         prog="flapfoam.qsSweep", description=__doc__.split("\n\n")[0])
@@ -517,14 +528,9 @@ def main(argv=None):
             writeTable(args.o + "-hover.csv", table,
                        list(grid) + list(RESULTS) + ["evaluations"])
             for r in table:
-                print("qsSweep: hover %s = %.9g: mean climb acceleration"
-                      " %.3g m/s^2, rate %.3g m/s, force/weight %.6f (%d"
-                      " runs)%s" % (args.hover, r[args.hover],
-                                    r.get("meanClimbAcceleration", math.nan),
-                                    r.get("meanClimbRate", math.nan),
-                                    r.get("forceOverWeight", math.nan),
-                                    r["evaluations"],
-                                    (": " + r["note"]) if r["note"] else ""))
+                print("qsSweep: %s: %s" % (", ".join(
+                    "%s %.6g" % (n, r[n]) for n in grid if n != args.hover)
+                    or "hover", hoverLine(args.hover, r)))
     except SweepError as e:
         sys.exit("flapfoam.qsSweep: %s" % e)
 
