@@ -11,15 +11,17 @@ pitching) and the mass, from rest over N whole cycles.
     python3 -m flapfoam.qsSweep -grid "flapAmplitude=1.0:1.5:10
         pitchAmplitude=0.5:1.0:10" [-dict FILE] [-cycles 5]
         [-stepsPerCycle 250] [-solver Newmark] [-nIter N] [-np 2]
-        [-dir DIR] [-o PREFIX] [-map X,Y] [-hover PARAM] [-keep]
+        [-dir DIR] [-o PREFIX] [-map X,Y] [-hover PARAM] [-hoverTol 1e-6]
+        [-massBody NAME] [-keep]
 
 Grid: NAME=LO:HI:N (N values, LO and HI included), NAME=V1,V2,... or
 NAME=V; parameters (the dictionary's value where not given):
     flapAmplitude, flapK, flapPhase     the flapping entry (rad, -, rad)
     pitchAmplitude, pitchK, pitchPhase  the pitching entry (rad, -, rad)
     frequency                           both entries [Hz]
-    mass                                the mass of the first aerodynamics
-                                        entry's body [kg]
+    mass                                the mass of -massBody (default:
+                                        the first aerodynamics entry's
+                                        body, the drone for SW) [kg]
 Each point runs cycles/frequency seconds with deltaT = 1/(frequency
 stepsPerCycle), a row of joints.dat per step, with the integrator -solver
 (default Newmark: second order here, its climb rate within 1e-5 of the
@@ -28,7 +30,9 @@ converged one at 250 steps per cycle, where symplectic is 1 % off) and
     meanClimbRate          (z(T) - z(0))/T, z the first free Pz joint [m/s]
     meanClimbAcceleration  (zDot(T) - zDot(0))/T [m/s^2]
     forceOverWeight        1 + meanClimbAcceleration/|g|: the mean vertical
-                           force over the weight (1: hover)
+                           force over the weight (1: hover; exact where Pz
+                           is the root joint and the rest moves
+                           periodically)
     meanDrift              (x(T) - x(0))/T, x the first free Px joint [m/s]
     meanPower              the prescribed joints' mean power (sum of the
                            power_<j> columns, trapezoidal mean) [W], and
@@ -125,7 +129,8 @@ class Model:
     by placeholder words (foamDictionary -precision 17 -set), filled in per
     point; the solver and nIter set once."""
 
-    def __init__(self, path, workDir, solver=None, nIter=None):
+    def __init__(self, path, workDir, solver=None, nIter=None,
+                 massBody=None):
         if not os.path.isfile(path):
             raise SweepError("-dict %s: no such file" % path)
         d = readFoamDict(path)
@@ -140,7 +145,11 @@ class Model:
                              " (allowed: a multibody dictionary with"
                              " aerodynamics { NAME { type quasiSteady; ...}})"
                              % path)
-        self.massBody = aero[0]["body"][0]
+        self.massBody = massBody or aero[0]["body"][0]
+        if self.massBody not in coeffs.get("bodies", {}):
+            raise SweepError("-massBody %s: not allowed (a body of %s: %s)"
+                             % (self.massBody, path,
+                                ", ".join(coeffs.get("bodies", {}))))
         self.g = abs(float(coeffs.get("g", ["(", "0", "0", "0", ")"])[3]))
         self.defaults = self._defaults(coeffs)
         self.template = os.path.join(workDir, "dynamicMeshDict.template")
@@ -488,6 +497,7 @@ def arguments(argv):
     parser.add_argument("-hover", metavar="PARAM")
     parser.add_argument("-hoverTol", type=float, default=1e-6,
                         help="tolerance on the hover value (default 1e-6)")
+    parser.add_argument("-massBody", help="the body of the parameter mass")
     parser.add_argument("-keep", action="store_true")
     args = parser.parse_args(argv)
     for name, least in (("cycles", 1), ("stepsPerCycle", 4), ("np", 1),
@@ -507,7 +517,8 @@ def main(argv=None):
         grid = parseGrid(args.grid)
         pair = mapPair(grid, args.map)
         os.makedirs(args.dir, exist_ok=True)
-        model = Model(args.dict, args.dir, args.solver, args.nIter)
+        model = Model(args.dict, args.dir, args.solver, args.nIter,
+                      args.massBody)
         sweep = Sweep(model, args.dir, args.cycles, args.stepsPerCycle,
                       args.keep)
         hover = Hover(sweep, grid, args.hover, args.hoverTol) \
