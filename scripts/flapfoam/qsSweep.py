@@ -44,7 +44,7 @@ over any other such parameter), or curves when one parameter varies.
 -hover PARAM: for every combination of the other parameters, the value of
 PARAM with zero meanClimbAcceleration (Brent's method between the grid's
 values of PARAM where its sign changes): PREFIX-hover.csv.
-numpy, matplotlib.
+numpy, matplotlib; scipy for -hover.
 """
 
 import argparse
