@@ -276,6 +276,41 @@ wordList reportedBodies(const dictionary& modelDict)
 }
 
 
+// The model, its bodies and their loads for controlDict's function objects
+// (flightData), on a registry region0 without a mesh
+struct publishedMotion
+{
+    objectRegistry region;
+    RBD::motionRecord record;
+
+    publishedMotion
+    (
+        const Time& runTime,
+        const RBD::eABAMotion& model,
+        const appliedLoads& loads,
+        const dictionary& modelDict
+    )
+    :
+        region
+        (
+            IOobject
+            (
+                polyMesh::defaultRegion,
+                runTime.timeName(),
+                runTime,
+                IOobject::NO_READ,
+                IOobject::NO_WRITE
+            )
+        ),
+        record
+        (
+            region, model, loads.fx, reportedBodies(modelDict),
+            model.freshStart()
+        )
+    {}
+};
+
+
 // The function objects of a step, as functionObjectList::execute but for
 // the state dictionary it writes at every write time (a time folder each)
 void executeFunctionObjects(Time& runTime)
@@ -390,24 +425,7 @@ int main(int argc, char *argv[])
     model.state().t() = runTime.value();
     initialiseState(model, tau, loads);
 
-    // The model, its bodies and their loads for controlDict's function
-    // objects (flightData), on a registry without a mesh
-    objectRegistry region
-    (
-        IOobject
-        (
-            polyMesh::defaultRegion,
-            runTime.timeName(),
-            runTime,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE
-        )
-    );
-    const RBD::motionRecord record
-    (
-        region, model, loads.fx, reportedBodies(modelDict),
-        model.freshStart()
-    );
+    const publishedMotion published(runTime, model, loads, modelDict);
     runTime.functionObjects().start();
 
     // Output table
