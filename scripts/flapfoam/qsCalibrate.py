@@ -85,22 +85,15 @@ class FlightRows:
             "force")
 
     def __init__(self, case, body, centreOfMass, skip):
-        import h5py
         path = find(case)
         if path is None:
             fail("no postProcessing/flightData/*/flightData.h5 in %s (a CFD"
                  " run's flight data)" % case)
         self.path = path
-        with h5py.File(path, "r") as f:
-            missing = ["bodies/%s/%s" % (body, k) for k in self.KEYS
-                       if "bodies/%s/%s" % (body, k) not in f]
-            if missing or "time" not in f:
-                fail("%s: no %s (the motion and fluid force of body %s);"
-                     " its bodies: %s"
-                     % (path, ", ".join(missing or ["time"]), body,
-                        ", ".join(f.get("bodies", {}).keys()) or "none"))
-            d = {k: f["bodies/%s/%s" % (body, k)][()] for k in self.KEYS}
-            t = f["time"][()]
+        try:
+            t, d = self.read(body)
+        except OSError as e:
+            fail("%s: cannot read: %s" % (path, e))
         self.select(t, d, skip)
         E = d["orientation"][self.rows].reshape(-1, 3, 3)
         arm = E @ centreOfMass
@@ -111,6 +104,20 @@ class FlightRows:
         self.force = d["force"][self.rows]
         self.time = t[self.rows]
         self.step = t[self.rows] - t[self.rows - 1]
+
+    def read(self, body):
+        """(time, {key: rows}) of the body's datasets."""
+        import h5py
+        with h5py.File(self.path, "r") as f:
+            missing = ["bodies/%s/%s" % (body, k) for k in self.KEYS
+                       if "bodies/%s/%s" % (body, k) not in f]
+            if missing or "time" not in f:
+                fail("%s: no %s (the motion and fluid force of body %s);"
+                     " its bodies: %s"
+                     % (self.path, ", ".join(missing or ["time"]), body,
+                        ", ".join(f.get("bodies", {}).keys()) or "none"))
+            return f["time"][()], {k: f["bodies/%s/%s" % (body, k)][()]
+                                   for k in self.KEYS}
 
     def select(self, t, d, skip):
         """self.rows: the rows after the initial state and -skip steps;
@@ -276,8 +283,11 @@ def main():
     rows = FlightRows(args.case, body, centre, args.skip)
     text = report(args, rows, name, entry, coeffs)
     if args.out:
-        with open(args.out, "w") as f:
-            f.write(text + "\n")
+        try:
+            with open(args.out, "w") as f:
+                f.write(text + "\n")
+        except OSError as e:
+            fail("-out %s: cannot write: %s" % (args.out, e))
 
 
 if __name__ == "__main__":
