@@ -134,7 +134,8 @@ void Foam::functionObjects::flightData::addBodies
         const word prefix("bodies/" + body + "/");
 
         const vector c(m.centreOfMass(bodyID));
-        const spatialVector v(model.v(bodyID, c));
+        // v takes a point in the body frame: the centre of mass there
+        const spatialVector v(model.v(bodyID, model.I(bodyID).c()));
         const tensor R(model.X0(bodyID).E().T());
 
         addEntry(r, prefix + "position", xyz, components(c));
