@@ -26,7 +26,7 @@ import sys
 import numpy as np
 
 from flapfoam import flightData
-from flapfoam.plotting import plt, save, shadeDownstrokes
+from flapfoam.plotting import cycleAxes, plt, save, shadeDownstrokes
 
 
 def run(case, body):
@@ -102,14 +102,12 @@ def plots(cfd, qs, period, out):
     sel = tQ <= tC[-1] + 1e-12
     fig, ax = plt.subplots(figsize=(8, 4.5))
     shadeDownstrokes(ax, tC/period, qDotC[:, 2])
-    for c, C, t, style, label in ((0, cC, tC, "-", "CFD"),
-                                  (0, cQ[sel], tQ[sel], "--", "QS")):
+    for C, t, style, label in ((cC, tC, "-", "CFD"),
+                               (cQ[sel], tQ[sel], "--", "QS")):
         ax.plot(t/period, C[:, 0], "C0" + style, label="C_xI " + label)
         ax.plot(t/period, C[:, 1], "C1" + style, label="C_zI " + label)
-    ax.set_xlabel("t f [cycles]")
-    ax.set_ylabel("C = F / (0.5 rho S U_ref^2)")
-    ax.set_title("Wing force coefficients: CFD and quasi-steady")
-    ax.grid(True, alpha=0.3)
+    cycleAxes(ax, "C = F / (0.5 rho S U_ref^2)",
+              "Wing force coefficients: CFD and quasi-steady")
     ax.legend(fontsize=8)
     save(fig, out, "compareModels-coefficients.png")
     fig, ax = plt.subplots(figsize=(8, 4.5))
@@ -117,10 +115,7 @@ def plots(cfd, qs, period, out):
         ax.plot(tC/period, 1e3*qC[:, j], colour + "-", label=name + " CFD")
         ax.plot(tQ[sel]/period, 1e3*qQ[sel, j], colour + "--",
                 label=name + " QS")
-    ax.set_xlabel("t f [cycles]")
-    ax.set_ylabel("[mm]")
-    ax.set_title("Trajectory: CFD and quasi-steady")
-    ax.grid(True, alpha=0.3)
+    cycleAxes(ax, "[mm]", "Trajectory: CFD and quasi-steady")
     ax.legend(fontsize=8)
     save(fig, out, "compareModels-trajectory.png")
 

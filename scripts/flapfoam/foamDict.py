@@ -6,7 +6,6 @@ Minimal OpenFOAM dictionary reader (enough for dynamicMeshDict) and the
 rigidBodyMotionState of a time folder.  numpy only.
 """
 
-import os
 import re
 
 import numpy as np

@@ -103,14 +103,20 @@ class SingleWingDrone:
                    if isinstance(e, dict)]
         self.wing = Wing(entries[0])
 
-    def rhs(self, t, y):
-        x, z, xDot, zDot = y
+    def wingMotion(self, t):
+        """The wing's orientation E (body -> global) and angular velocity
+        at t (the prescribed flapping and pitching)."""
         phi, phiDot, _ = self.phi(t)
         alpha, alphaDot, _ = self.alpha(t)
         Rz = rotation("z", float(phi))
         E = Rz @ rotation("y", float(alpha))
         omega = np.array([0, 0, float(phiDot)]) \
             + float(alphaDot)*(Rz @ np.array([0, 1, 0]))
+        return E, omega
+
+    def rhs(self, t, y):
+        x, z, xDot, zDot = y
+        E, omega = self.wingMotion(t)
         F, _ = self.wing.force(E, np.array([x, 0, z]),
                                np.array([xDot, 0, zDot]), omega)
         return [xDot, zDot, F[0]/self.mass, F[2]/self.mass - self.g]

@@ -25,7 +25,7 @@ import h5py
 import numpy as np
 
 from flapfoam.foamDict import multibodyCoeffs
-from flapfoam.quasiSteady import SingleWingDrone, rotation, vec
+from flapfoam.quasiSteady import SingleWingDrone, vec
 
 
 def wingRows(drone, states, centre):
@@ -34,12 +34,7 @@ def wingRows(drone, states, centre):
     d = {k: [] for k in ("orientation", "position", "velocity",
                          "angularVelocity", "force")}
     for t, x, z, xDot, zDot in states:
-        phi, phiDot, _ = drone.phi(t)
-        alpha, alphaDot, _ = drone.alpha(t)
-        Rz = rotation("z", float(phi))
-        E = Rz @ rotation("y", float(alpha))
-        omega = np.array([0, 0, float(phiDot)]) \
-            + float(alphaDot)*(Rz @ np.array([0, 1, 0]))
+        E, omega = drone.wingMotion(t)
         origin, vOrigin = np.array([x, 0, z]), np.array([xDot, 0, zDot])
         F, _ = drone.wing.force(E, origin, vOrigin, omega)
         d["orientation"].append(E.reshape(9))
