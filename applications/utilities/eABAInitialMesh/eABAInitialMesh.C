@@ -59,6 +59,35 @@ using namespace Foam;
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
+namespace
+{
+
+// Write points to constant/polyMesh/<name> of mesh
+void writePoints(const fvMesh& mesh, const word& name, const pointField& p)
+{
+    pointIOField points
+    (
+        IOobject
+        (
+            name,
+            mesh.time().constant(),
+            polyMesh::meshSubDir,
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        p
+    );
+    Info<< "Writing " << points.objectPath() << endl;
+    points.write();
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
 int main(int argc, char *argv[])
 {
     argList::addNote
@@ -99,22 +128,6 @@ int main(int argc, char *argv[])
     }
     const eABAMeshMotion& motion = *motionPtr;
 
-    // Reference points: kept when already written
-    pointIOField points0
-    (
-        IOobject
-        (
-            "points0",
-            runTime.constant(),
-            polyMesh::meshSubDir,
-            mesh,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        motion.points0()
-    );
-
     const pointField newPoints(motion.curPoints());
 
     Info<< "Start state at t = " << runTime.value() << ": q = "
@@ -122,25 +135,9 @@ int main(int argc, char *argv[])
         << "Largest point displacement from q = 0: "
         << gMax(mag(newPoints - motion.points0())) << nl << endl;
 
-    Info<< "Writing " << points0.objectPath() << endl;
-    points0.write();
-
-    pointIOField points
-    (
-        IOobject
-        (
-            "points",
-            runTime.constant(),
-            polyMesh::meshSubDir,
-            mesh,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        newPoints
-    );
-    Info<< "Writing " << points.objectPath() << endl;
-    points.write();
+    // The reference points (q = 0) and the points of the start state
+    writePoints(mesh, "points0", motion.points0());
+    writePoints(mesh, "points", newPoints);
 
     Info<< nl << "End" << nl << endl;
 

@@ -240,12 +240,8 @@ bool checkStep
     return failed;
 }
 
-} // End anonymous namespace
-
-
-// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
-
-int main(int argc, char *argv[])
+// The note and the options of the command line
+void addOptions()
 {
     argList::addNote
     (
@@ -273,6 +269,16 @@ int main(int argc, char *argv[])
         "K",
         "with -couplings: keep every K-th step's stencil whole (default 10)"
     );
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    addOptions();
     #include "setRootCase.H"
 
     // The options and the input the stock readers do not survive, before
