@@ -194,6 +194,31 @@ void Foam::imposedMotionList::setJoints
 }
 
 
+Foam::label Foam::imposedMotionList::findEntry(const word& entryName) const
+{
+    forAll(*this, motioni)
+    {
+        if (operator[](motioni).name() == entryName)
+        {
+            return motioni;
+        }
+    }
+
+    OStringStream names;
+    for (const imposedMotion& motion : *this)
+    {
+        names << ' ' << motion.name();
+    }
+
+    FatalErrorInFunction
+        << "No imposedMotion entry '" << entryName << "': the entries are"
+        << (size() ? names.str().c_str() : " none") << nl
+        << exit(FatalError);
+
+    return -1;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::imposedMotionList::imposedMotionList
@@ -205,7 +230,8 @@ Foam::imposedMotionList::imposedMotionList
     PtrList<imposedMotion>(),
     joints_(),
     motionI_(),
-    localI_()
+    localI_(),
+    blends_()
 {
     const word key(findKey(modelDict));
 
@@ -234,6 +260,12 @@ Foam::imposedMotionList::imposedMotionList
     findOwners(jointDoF, ownerMotion, ownerLocal);
 
     setJoints(ownerMotion, ownerLocal);
+
+    blends_.setSize(size());
+    forAll(*this, motioni)
+    {
+        blends_.set(motioni, new imposedMotionBlend(operator[](motioni)));
+    }
 }
 
 
@@ -267,7 +299,7 @@ void Foam::imposedMotionList::evaluate
     {
         const label j = joints_[k];
 
-        operator[](motionI_[k]).evaluate
+        blends_[motionI_[k]].evaluate
         (
             localI_[k],
             t,
@@ -293,6 +325,73 @@ void Foam::imposedMotionList::write(Ostream& os) const
     }
 
     os.endBlock();
+}
+
+
+const Foam::imposedMotionBlend& Foam::imposedMotionList::blend
+(
+    const word& entryName
+) const
+{
+    return blends_[findEntry(entryName)];
+}
+
+
+Foam::scalar Foam::imposedMotionList::get
+(
+    const word& entryName,
+    const word& parameter
+) const
+{
+    return blend(entryName).get(parameter);
+}
+
+
+void Foam::imposedMotionList::set
+(
+    const word& entryName,
+    const word& parameter,
+    const scalar value,
+    const scalar t0,
+    const scalar blendTime
+)
+{
+    blends_[findEntry(entryName)].set(parameter, value, t0, blendTime);
+}
+
+
+void Foam::imposedMotionList::writeState(dictionary& stateDict) const
+{
+    dictionary motionsDict;
+
+    forAll(blends_, motioni)
+    {
+        dictionary entryDict;
+        blends_[motioni].writeState(entryDict);
+        motionsDict.add(operator[](motioni).name(), entryDict);
+    }
+
+    stateDict.set("imposedMotionState", motionsDict);
+}
+
+
+void Foam::imposedMotionList::readState(const dictionary& stateDict)
+{
+    const dictionary* motionsDictPtr =
+        stateDict.findDict("imposedMotionState", keyType::LITERAL);
+
+    if (!motionsDictPtr)
+    {
+        return;     // a fresh start
+    }
+
+    forAll(blends_, motioni)
+    {
+        blends_[motioni].readState
+        (
+            motionsDictPtr->subDict(operator[](motioni).name())
+        );
+    }
 }
 
 
