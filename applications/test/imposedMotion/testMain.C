@@ -38,7 +38,11 @@ Description
         formulas and their dictionary's numbers), exact derivatives;
       - imposedMotionList: joints ascending, evaluate writes only the
         prescribed entries, empty without the sub-dictionary, the authors'
-        spelling ImposedMotion (both spellings: FatalIOError).
+        spelling ImposedMotion (both spellings: FatalIOError);
+      - imposedMotionBlend (run-time parameter changes): q, qDot, qDdot
+        continuous across a change, exact derivatives inside the blend, a
+        change during a blend, frequency without phase jump, the chain
+        bounded, the state round trip bit for bit, bad input.
 
 \*---------------------------------------------------------------------------*/
 
