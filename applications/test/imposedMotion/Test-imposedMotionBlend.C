@@ -187,6 +187,10 @@ TEST(Blend, OldBeforeAndNewAfterExactly)
     EXPECT_FALSE(b.blending(t0 + Tb));
     EXPECT_EQ(b.get("amplitude"), 1.3);
     EXPECT_EQ(b.get("offset"), 0.1);
+
+    // Any value is kept to the bit (not formatted at the stream precision)
+    b.set("amplitude", 1.0/3, t0 + Tb, Tb);
+    EXPECT_EQ(b.get("amplitude"), 1.0/3);
 }
 
 
@@ -312,9 +316,12 @@ TEST(BlendList, SetEvaluatesAndWritesTheStateBitForBit)
     EXPECT_EQ(run.blend("pitch").current().dict().get<scalar>("amplitude"),
         0.5);
 
+    run.set("pitch", "offset", 1.0/7, t0 + 0.2*Tb, Tb);
+
     // The state at a restart in the middle of the blends, through text
-    // at 17 digits (as eABAMotion::writeState)
+    // at 17 digits (as eABAMotion::writeState), the stream precision 6
     dictionary state;
+    ASSERT_EQ(IOstream::defaultPrecision(), 6u);
     run.writeState(state);
     OStringStream os;
     os.precision(17);

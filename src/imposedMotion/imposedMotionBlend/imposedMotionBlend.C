@@ -21,9 +21,20 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "imposedMotionBlend.H"
+#include "primitiveEntry.H"
 #include "StringStream.H"
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::entry* Foam::imposedMotionBlend::scalarEntry
+(
+    const word& key,
+    const scalar value
+)
+{
+    return new primitiveEntry(key, token(value));
+}
+
 
 void Foam::imposedMotionBlend::checkKey(const word& key) const
 {
@@ -213,7 +224,7 @@ void Foam::imposedMotionBlend::set
     prune(t0);
 
     dictionary parameters(current().dict());
-    parameters.set(key, value);
+    parameters.set(scalarEntry(key, value));
 
     // Checks the value as the type checks its dictionary
     autoPtr<imposedMotion> motion(imposedMotion::New(name, parameters));
@@ -251,10 +262,10 @@ void Foam::imposedMotionBlend::writeState(dictionary& dict) const
         dictionary stage;
         if (k > 0)
         {
-            stage.add("t0", t0_[k]);
-            stage.add("blendTime", blendTime_[k]);
+            stage.add(scalarEntry("t0", t0_[k]));
+            stage.add(scalarEntry("blendTime", blendTime_[k]));
         }
-        stage.add("shift", shift_[k]);
+        stage.add(scalarEntry("shift", shift_[k]));
         stage.add("parameters", motions_[k].dict());
 
         dict.set(word("stage" + Foam::name(k)), stage);
