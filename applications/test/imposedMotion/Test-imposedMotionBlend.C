@@ -253,6 +253,33 @@ TEST(Blend, ChangeDuringRunningBlend)
 }
 
 
+TEST(Blend, SeveralParametersAtOneUpdate)
+{
+    // A controller sets amplitude, frequency and offset at the same t0
+    imposedMotionBlend b(makeBlend(flapText));
+    b.set("amplitude", 1.3, t0, Tb);
+    b.set("frequency", 25, t0, Tb);
+    b.set("offset", -0.2, t0, Tb);
+    EXPECT_EQ(b.nStages(), 4);
+
+    const jointState scale = harmonicScale(1.3, 25);
+    expectContinuous(b, t0, scale);
+    expectContinuous(b, t0 + Tb, scale);
+    expectDerivatives(b, t0, t0 + Tb, scale);
+
+    const scalar phase = 0.3 + twoPi*(20 - 25)*t0;
+    for (const scalar t : {t0 + Tb, 0.7})
+    {
+        EXPECT_NEAR(eval(b, t).q, -0.2 + 1.3*std::cos(twoPi*25*t + phase),
+            1e-12);
+    }
+
+    // The next update, after the blends: one stage plus the new one
+    b.set("amplitude", 1.1, t0 + 2*Tb, Tb);
+    EXPECT_EQ(b.nStages(), 2);
+}
+
+
 TEST(Blend, FrequencyChangeWithoutPhaseJump)
 {
     // Abrupt (Tb = 0): q stays continuous, only the phase rate changes
