@@ -134,4 +134,75 @@ TEST(imposedMotionBlend, PrescribedTorqueContinuousAcrossUpdates)
 }
 
 
+// Restart in the middle of a blend: the model written by eABAMotion::write,
+// the state written as eABAMotion::writeState writes it (the motion state
+// and imposedMotionList::writeState) give a run that continues as the
+// uninterrupted one, the controller's changes after the restart included
+TEST(eABAMotion, RestartInTheMiddleOfABlend)
+{
+    const unsigned oldPrecision = IOstream::defaultPrecision(17);
+
+    RBD::eABAMotion motion(runTime(), readTestModel("restart"));
+
+    const scalarField tau(motion.nDoF(), Zero);
+    const Field<spatialVector> fx(motion.nBodies(), Zero);
+    const scalar dt = 1e-3;
+
+    // A controller: a change every 8 steps, blended over 12
+    auto advance = [&](RBD::eABAMotion& m, const label step)
+    {
+        if (step % 8 == 0)
+        {
+            m.imposedMotions().set
+            (
+                "shoulder", step % 16 ? "amplitude" : "frequency",
+                1 + 0.01*step, (step - 1)*dt, 12*dt
+            );
+        }
+        m.newTime();
+        for (label iter = 0; iter < m.nIter(); ++iter)
+        {
+            m.solve(step*dt, dt, tau, fx);
+        }
+    };
+
+    for (label step = 1; step <= 20; ++step)
+    {
+        advance(motion, step);
+    }
+    ASSERT_TRUE(motion.imposedMotions().blend("shoulder").blending(20*dt));
+
+    OStringStream os;
+    motion.write(os);
+    dictionary modelDict(dictFromString(os.str()));
+
+    dictionary stateDict;
+    motion.state().write(stateDict);
+    motion.imposedMotions().writeState(stateDict);
+
+    scratchTime restartTime("flapFoamTest-rigidBodyDynamics", 1, dt);
+    restartTime().setTime(20*dt, 20);
+
+    RBD::eABAMotion restarted(restartTime(), modelDict, stateDict);
+    EXPECT_FALSE(restarted.freshStart());
+    EXPECT_EQ(restarted.imposedMotions().blend("shoulder").nStages(), 3);
+    compareStates(restarted.state(), motion.state(), 0, 20);
+
+    motion.newTime();
+    restarted.newTime();
+
+    for (label step = 21; step <= 60; ++step)
+    {
+        advance(motion, step);
+        advance(restarted, step);
+        compareStates(restarted.state(), motion.state(), 1e-12, step);
+        const label j = 1;
+        EXPECT_EQ(restarted.state().q()[j], motion.state().q()[j]);
+        EXPECT_EQ(restarted.state().qDdot()[j], motion.state().qDdot()[j]);
+    }
+
+    IOstream::defaultPrecision(oldPrecision);
+}
+
+
 // ************************************************************************* //

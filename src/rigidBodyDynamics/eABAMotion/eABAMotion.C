@@ -190,6 +190,12 @@ Foam::RBD::eABAMotion::eABAMotion
     solver_(nullptr),
     qDdotPrev_(nDoF(), Zero)
 {
+    if (!freshStart_)
+    {
+        // The parameters and blends set by a controller
+        imposedMotions_.readState(stateDict);
+    }
+
     readCoeffs(dict);
     solver_ = eABASolver::New(*this, dict.subDict("solver"));
     initialise();
@@ -397,6 +403,7 @@ bool Foam::RBD::eABAMotion::writeState(const objectRegistry& db) const
 
     IOdictionary dict(stateIO(db, IOobject::NO_READ));
     motionState_.write(dict);
+    imposedMotions_.writeState(dict);
 
     const bool ok = dict.regIOobject::writeObject
     (
