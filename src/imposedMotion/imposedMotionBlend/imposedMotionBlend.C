@@ -273,6 +273,45 @@ void Foam::imposedMotionBlend::writeState(dictionary& dict) const
 }
 
 
+void Foam::imposedMotionBlend::reportChanged
+(
+    const dictionary& given,
+    const dictionary& state
+) const
+{
+    // The parameters in effect at the restart (the last stage) against the
+    // dictionary's entry: a controller's changes, or an edited dictionary
+    const dictionary now(current().dict());
+    const auto text = [](const entry& e)
+    {
+        OStringStream os;
+        os.precision(17);
+        for (const token& tok : e.stream())
+        {
+            os << ' ' << tok;
+        }
+        return os.str();
+    };
+    OStringStream changed;
+    for (const entry& e : now)
+    {
+        const entry* g = given.findEntry(e.keyword(), keyType::LITERAL);
+        if (!g || text(e) != text(*g))
+        {
+            changed << ' ' << e.keyword() << text(e).c_str()
+                << " (dictionary" << (g ? text(*g).c_str() : " none")
+                << ')';
+        }
+    }
+    if (!changed.str().empty())
+    {
+        Info<< "imposedMotion entry " << current().name() << ": the state "
+            << state.name() << " (as the run left it) replaces the"
+            << " dictionary's parameters:" << changed.str().c_str() << nl;
+    }
+}
+
+
 void Foam::imposedMotionBlend::readState(const dictionary& dict)
 {
     const label nStages = dict.get<label>("nStages");
@@ -288,6 +327,7 @@ void Foam::imposedMotionBlend::readState(const dictionary& dict)
     const word name(current().name());
     const word type(current().type());
     const labelList joints(current().joints());
+    const dictionary given(current().dict());
 
     motions_.clear();
     shift_.clear();
@@ -318,6 +358,8 @@ void Foam::imposedMotionBlend::readState(const dictionary& dict)
                 << exit(FatalIOError);
         }
     }
+
+    reportChanged(given, dict);
 }
 
 
