@@ -41,36 +41,9 @@ namespace cellCellStencils
 }
 }
 
-const Foam::Enum
-<
-    Foam::cellCellStencils::octreeInverseDistance::searchType
->
-Foam::cellCellStencils::octreeInverseDistance::searchTypeNames
-({
-    { searchType::cached, "cached" },
-    { searchType::stock, "stock" },
-});
-
-const Foam::Enum
-<
-    Foam::cellCellStencils::octreeInverseDistance::holeCuttingType
->
-Foam::cellCellStencils::octreeInverseDistance::holeCuttingTypeNames
-({
-    { holeCuttingType::incremental, "incremental" },
-    { holeCuttingType::full, "full" },
-});
-
 const Foam::word
 Foam::cellCellStencils::octreeInverseDistance::stencilPart("oversetStencil");
 
-const Foam::wordList
-Foam::cellCellStencils::octreeInverseDistance::allowedKeys
-({
-    "method", "search", "holeCutting", "noHoleCut", "maxWalk",
-    "rigidTolerance", "layerRelax", "tolerance", "searchBox",
-    "searchBoxDivisions", "log"
-});
 
 const Foam::scalar
 Foam::cellCellStencils::octreeInverseDistance::residualMargin(4);
@@ -121,7 +94,7 @@ bool Foam::cellCellStencils::octreeInverseDistance::cuts
     const label zone
 ) const
 {
-    for (const labelPair& p : noHoleCut_)
+    for (const labelPair& p : settings_.noHoleCut())
     {
         if (p.first() == zone && p.second() == cutter)
         {
@@ -155,7 +128,7 @@ void Foam::cellCellStencils::octreeInverseDistance::buildZone
     zoneParts_.set(zonei, new fvMeshSubset(mesh_, zonei, zoneID));
 
     const fvMesh& subMesh = zoneParts_[zonei].subMesh();
-    zoneSearch_.set(zonei, new zoneDonorSearch(subMesh, maxWalk_));
+    zoneSearch_.set(zonei, new zoneDonorSearch(subMesh, settings_.maxWalk()));
 
     prevDonor_[zonei] = labelList(mesh_.nCells(), -1);
     prevRemote_[zonei] = List<labelPair>(mesh_.nCells(), labelPair(-1, -1));
@@ -284,12 +257,13 @@ void Foam::cellCellStencils::octreeInverseDistance::fitZones()
         zoneResidual_[zonei] = residual;
         const scalar size = zoneSearch_[zonei].size();
 
-        if (residual > rigidTolerance_*size)
+        if (residual > settings_.rigidTolerance()*size)
         {
             WarningInFunction
                 << "zone " << zonei << " is not rigid: point residual "
                 << residual << " > rigidTolerance*size "
-                << rigidTolerance_*size << "; rebuilding its search cache"
+                << settings_.rigidTolerance()*size
+                << "; rebuilding its search cache"
                 << endl;
             buildZone(zonei, zoneID);
             fullReason_ = "zone " + Foam::name(zonei) + " rebuilt";
@@ -301,7 +275,7 @@ void Foam::cellCellStencils::octreeInverseDistance::fitZones()
                 << " rigidly (rigid-fit residual " << residual
                 << " = " << residual/size << " of its size, above"
                 << " round-off " << roundOffResidual << ", below"
-                << " rigidTolerance " << rigidTolerance_ << "): its"
+                << " rigidTolerance " << settings_.rigidTolerance() << "): its"
                 << " donors are checked against the current points" << endl;
         }
         if (nearlyRigid(zonei))
@@ -341,7 +315,7 @@ void Foam::cellCellStencils::octreeInverseDistance::updateCached()
         buildCache(zoneID());
     }
     ws_.reset(mesh_.nCells(), zoneSearch_.size());
-    smallVec_ = mesh_.bounds().span()*tolerance_;
+    smallVec_ = mesh_.bounds().span()*settings_.tolerance();
 
     // Laps of the update as nested stepTimers parts (oversetStencil keeps
     // the rest: cache building, logging)
@@ -379,18 +353,7 @@ Foam::cellCellStencils::octreeInverseDistance::octreeInverseDistance
 )
 :
     inverseDistance(mesh, dict, false),
-    search_(searchType::cached),
-    holeCutting_(holeCuttingType::incremental),
-    maxWalk_(16),
-    rigidTolerance_(1e-6),
-    layerRelax_(1),
-    tolerance_(1e-10),
-    useSearchBox_(false),
-    searchBox_(),
-    useDivisions_(false),
-    divisions_(Zero),
-    noHoleCut_(),
-    log_(true),
+    settings_(dict_, typeName, countZones(zoneID())),
     zoneParts_(),
     zoneSearch_(),
     prevDonor_(),
@@ -418,8 +381,6 @@ Foam::cellCellStencils::octreeInverseDistance::octreeInverseDistance
     nStencilBuilt_(0),
     nStencilReused_(0)
 {
-    readSettings();
-
     if (doUpdate)
     {
         update();
@@ -433,7 +394,7 @@ bool Foam::cellCellStencils::octreeInverseDistance::update()
 {
     stepTimers::scope timer(timers_, stencilPart);
 
-    if (search_ == searchType::stock)
+    if (settings_.search() == octreeStencilSettings::searchType::stock)
     {
         return inverseDistance::update();
     }

@@ -183,7 +183,10 @@ void Foam::cellCellStencils::octreeInverseDistance::walkFrontResolved
 {
     while (true)
     {
-        walkFront(layerRelax_, ws_.stencil, ws_.cellTypes, ws_.weight);
+        walkFront
+        (
+            settings_.layerRelax(), ws_.stencil, ws_.cellTypes, ws_.weight
+        );
 
         if (localDone && !Pstream::parRun())
         {

@@ -73,9 +73,9 @@ bool Foam::cellCellStencils::octreeInverseDistance::voxelsCurrent
 Foam::labelVector
 Foam::cellCellStencils::octreeInverseDistance::voxelDivisions() const
 {
-    if (useDivisions_)
+    if (settings_.useDivisions())
     {
-        return divisions_;
+        return settings_.divisions();
     }
 
     // As the stock stencil, about one voxel a cell, but of the whole mesh:
@@ -217,7 +217,8 @@ void Foam::cellCellStencils::octreeInverseDistance::checkSearchBox
     if (returnReduce(met, maxOp<label>()) != -1)
     {
         FatalIOErrorInFunction(dict_)
-            << "searchBox " << searchBox_ << " does not contain the"
+            << "searchBox " << settings_.searchBox()
+            << " does not contain the"
             << " walls of zone " << zonei << " at time "
             << mesh_.time().timeName() << ": e.g. the wall face in "
             << face << " meets zone " << met << " and would cut no holes"
@@ -314,9 +315,9 @@ void Foam::cellCellStencils::octreeInverseDistance::fillVoxels()
     const bool parallel = Pstream::parRun();
 
     ws_.patchBb = ws_.zoneBb;
-    if (useSearchBox_)
+    if (settings_.useSearchBox())
     {
-        ws_.patchBb = treeBoundBoxList(1, searchBox_);
+        ws_.patchBb = treeBoundBoxList(1, settings_.searchBox());
     }
     ws_.patchDivs = voxelDivisions();
 
@@ -339,7 +340,7 @@ void Foam::cellCellStencils::octreeInverseDistance::fillVoxels()
             }
         }
         const List<boundBox> dropped(markZoneBoundaries(zonei, fill));
-        if (fill && useSearchBox_)
+        if (fill && settings_.useSearchBox())
         {
             checkSearchBox(zonei, dropped);
         }
@@ -370,7 +371,9 @@ void Foam::cellCellStencils::octreeInverseDistance::cutHoles()
     // reach; full: every cell (the first update after the cache was built,
     // or holeCutting full)
     ws_.incremental =
-        holeCutting_ == holeCuttingType::incremental && fullReason_.empty();
+        settings_.holeCutting()
+     == octreeStencilSettings::holeCuttingType::incremental
+     && fullReason_.empty();
     ws_.mode =
         ws_.incremental ? word("incremental")
       : fullReason_.size() ? word("full (" + fullReason_ + ")")

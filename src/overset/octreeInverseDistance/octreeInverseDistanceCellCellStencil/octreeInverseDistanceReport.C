@@ -219,7 +219,7 @@ void Foam::cellCellStencils::octreeInverseDistance::report
     const bool rebuilt
 ) const
 {
-    if (log_ || debug)
+    if (settings_.log() || debug)
     {
         logStep(rebuilt);
     }

@@ -19,31 +19,58 @@ License
     You should have received a copy of the GNU General Public License
     along with flapFoam (COPYING).  If not, see <http://www.gnu.org/licenses/>.
 
-
-Description
-    octreeInverseDistance: reading and checking the settings of
-    oversetInterpolation (choices, ranges, searchBox and its divisions,
-    noHoleCut, unknown keys).
-
 \*---------------------------------------------------------------------------*/
 
-#include "octreeInverseDistanceCellCellStencil.H"
+#include "octreeStencilSettings.H"
+#include "Pstream.H"
 #include "FlatOutput.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum
+<
+    Foam::octreeStencilSettings::searchType
+>
+Foam::octreeStencilSettings::searchTypeNames
+({
+    { searchType::cached, "cached" },
+    { searchType::stock, "stock" },
+});
+
+const Foam::Enum
+<
+    Foam::octreeStencilSettings::holeCuttingType
+>
+Foam::octreeStencilSettings::holeCuttingTypeNames
+({
+    { holeCuttingType::incremental, "incremental" },
+    { holeCuttingType::full, "full" },
+});
+
+const Foam::wordList
+Foam::octreeStencilSettings::allowedKeys
+({
+    "method", "search", "holeCutting", "noHoleCut", "maxWalk",
+    "rigidTolerance", "layerRelax", "tolerance", "searchBox",
+    "searchBoxDivisions", "log"
+});
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class EnumType>
-EnumType Foam::cellCellStencils::octreeInverseDistance::readChoice
+EnumType Foam::octreeStencilSettings::readChoice
 (
+    const dictionary& dict,
     const word& key,
     const Enum<EnumType>& names,
     const EnumType deflt
-) const
+)
 {
-    const word name(dict_.getOrDefault<word>(key, names[deflt]));
+    const word name(dict.getOrDefault<word>(key, names[deflt]));
     if (!names.found(name))
     {
-        FatalIOErrorInFunction(dict_)
+        FatalIOErrorInFunction(dict)
             << key << " " << name << " unknown: must be one of "
             << names.sortedToc() << exit(FatalIOError);
     }
@@ -51,79 +78,68 @@ EnumType Foam::cellCellStencils::octreeInverseDistance::readChoice
 }
 
 
-void Foam::cellCellStencils::octreeInverseDistance::readSettings()
+void Foam::octreeStencilSettings::readNumbers(const dictionary& dict)
 {
-    checkKeys();
-    search_ = readChoice("search", searchTypeNames, searchType::cached);
-    holeCutting_ =
-        readChoice
-        (
-            "holeCutting", holeCuttingTypeNames, holeCuttingType::incremental
-        );
-    readNumbers();
-    readNoHoleCut();
-}
-
-
-void Foam::cellCellStencils::octreeInverseDistance::readNumbers()
-{
-    maxWalk_ = dict_.getOrDefault<label>("maxWalk", 16);
+    maxWalk_ = dict.getOrDefault<label>("maxWalk", 16);
     if (maxWalk_ < 0)
     {
-        FatalIOErrorInFunction(dict_)
+        FatalIOErrorInFunction(dict)
             << "maxWalk " << maxWalk_ << " out of range: must be >= 0"
             << exit(FatalIOError);
     }
 
-    rigidTolerance_ = dict_.getOrDefault<scalar>("rigidTolerance", 1e-6);
+    rigidTolerance_ = dict.getOrDefault<scalar>("rigidTolerance", 1e-6);
     if (rigidTolerance_ <= 0 || rigidTolerance_ >= 1)
     {
-        FatalIOErrorInFunction(dict_)
+        FatalIOErrorInFunction(dict)
             << "rigidTolerance " << rigidTolerance_
             << " out of range: must be in (0, 1)" << exit(FatalIOError);
     }
 
-    layerRelax_ = dict_.getOrDefault<scalar>("layerRelax", 1);
+    layerRelax_ = dict.getOrDefault<scalar>("layerRelax", 1);
     if (layerRelax_ < 0 || layerRelax_ > 1)
     {
-        FatalIOErrorInFunction(dict_)
+        FatalIOErrorInFunction(dict)
             << "layerRelax " << layerRelax_
             << " out of range: must be in [0, 1]" << exit(FatalIOError);
     }
 
-    tolerance_ = dict_.getOrDefault<scalar>("tolerance", 1e-10);
+    tolerance_ = dict.getOrDefault<scalar>("tolerance", 1e-10);
     if (tolerance_ <= 0 || tolerance_ >= 1)
     {
-        FatalIOErrorInFunction(dict_)
+        FatalIOErrorInFunction(dict)
             << "tolerance " << tolerance_
             << " out of range: must be in (0, 1)" << exit(FatalIOError);
     }
 
-    readSearchBox();
 
-    log_ = dict_.getOrDefault<bool>("log", false);
+    log_ = dict.getOrDefault<bool>("log", false);
 }
 
 
-void Foam::cellCellStencils::octreeInverseDistance::readSearchBox()
+void Foam::octreeStencilSettings::readSearchBox
+(
+    const dictionary& dict,
+    const word& typeName
+)
 {
-    useSearchBox_ = dict_.readIfPresent("searchBox", searchBox_);
+    useSearchBox_ = dict.readIfPresent("searchBox", searchBox_);
     if
     (
         useSearchBox_
      && (searchBox_.empty() || cmptMin(searchBox_.span()) <= 0)
     )
     {
-        FatalIOErrorInFunction(dict_)
+        FatalIOErrorInFunction(dict)
             << "searchBox " << searchBox_ << " is empty or flat: must be"
             << " (min) (max) with max > min in every direction (a 2-D"
             << " case too: span the mesh's thickness)" << exit(FatalIOError);
     }
 
-    useDivisions_ = dict_.readIfPresent("searchBoxDivisions", divisions_);
+    useDivisions_ = dict.readIfPresent("searchBoxDivisions", divisions_);
     if (useDivisions_ && cmptMin(divisions_) < 1)
     {
-        FatalIOErrorInFunction(dict_)
+        FatalIOErrorInFunction(dict)
             << "searchBoxDivisions " << divisions_
             << " out of range: every component must be >= 1"
             << exit(FatalIOError);
@@ -132,7 +148,7 @@ void Foam::cellCellStencils::octreeInverseDistance::readSearchBox()
     if (Pstream::parRun() && !(useSearchBox_ && useDivisions_))
     {
         Info<< typeName << " : parallel run without searchBox and"
-            << " searchBoxDivisions in " << dict_.name() << ": the hole"
+            << " searchBoxDivisions in " << dict.name() << ": the hole"
             << " test's voxels span each zone's whole box, divisions from"
             << " the whole mesh's cell count (the serial run's grid); the"
             << " stock inverseDistance takes each rank's own box and cells,"
@@ -146,7 +162,7 @@ void Foam::cellCellStencils::octreeInverseDistance::readSearchBox()
         scalar(divisions_.x())*scalar(divisions_.y())*scalar(divisions_.z());
     if (useDivisions_ && nVoxels > scalar(labelMax))
     {
-        FatalIOErrorInFunction(dict_)
+        FatalIOErrorInFunction(dict)
             << "searchBoxDivisions " << divisions_ << " out of range: "
             << nVoxels << " voxels, more than a label holds: the product of"
             << " the components must be <= " << labelMax
@@ -155,13 +171,17 @@ void Foam::cellCellStencils::octreeInverseDistance::readSearchBox()
 }
 
 
-void Foam::cellCellStencils::octreeInverseDistance::checkKeys() const
+void Foam::octreeStencilSettings::checkKeys
+(
+    const dictionary& dict,
+    const word& typeName
+)
 {
-    for (const word& key : dict_.toc())
+    for (const word& key : dict.toc())
     {
         if (!allowedKeys.found(key))
         {
-            FatalIOErrorInFunction(dict_)
+            FatalIOErrorInFunction(dict)
                 << key << " is not a key of method " << typeName
                 << " (misspelled?): allowed keys are "
                 << flatOutput(allowedKeys) << exit(FatalIOError);
@@ -170,12 +190,15 @@ void Foam::cellCellStencils::octreeInverseDistance::checkKeys() const
 }
 
 
-void Foam::cellCellStencils::octreeInverseDistance::readNoHoleCut()
+void Foam::octreeStencilSettings::readNoHoleCut
+(
+    const dictionary& dict,
+    const label nZones
+)
 {
     noHoleCut_.clear();
-    if (dict_.readIfPresent("noHoleCut", noHoleCut_))
+    if (dict.readIfPresent("noHoleCut", noHoleCut_))
     {
-        const label nZones = countZones(this->zoneID());
         for (const labelPair& p : noHoleCut_)
         {
             if
@@ -185,7 +208,7 @@ void Foam::cellCellStencils::octreeInverseDistance::readNoHoleCut()
              || p.first() == p.second()
             )
             {
-                FatalIOErrorInFunction(dict_)
+                FatalIOErrorInFunction(dict)
                     << "noHoleCut entry " << p << ": a pair (zone cutter) of"
                     << " two different zones, each in [0, " << nZones - 1
                     << "] (the zoneID values)" << exit(FatalIOError);
@@ -193,7 +216,7 @@ void Foam::cellCellStencils::octreeInverseDistance::readNoHoleCut()
         }
         if (noHoleCut_.size() && search_ != searchType::cached)
         {
-            FatalIOErrorInFunction(dict_)
+            FatalIOErrorInFunction(dict)
                 << "noHoleCut " << noHoleCut_ << " needs search "
                 << searchTypeNames[searchType::cached]
                 << " (search " << searchTypeNames[search_]
@@ -201,6 +224,42 @@ void Foam::cellCellStencils::octreeInverseDistance::readNoHoleCut()
                 << exit(FatalIOError);
         }
     }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::octreeStencilSettings::octreeStencilSettings
+(
+    const dictionary& dict,
+    const word& typeName,
+    const label nZones
+)
+:
+    search_(searchType::cached),
+    holeCutting_(holeCuttingType::incremental),
+    maxWalk_(16),
+    rigidTolerance_(1e-6),
+    layerRelax_(1),
+    tolerance_(1e-10),
+    useSearchBox_(false),
+    searchBox_(),
+    useDivisions_(false),
+    divisions_(Zero),
+    noHoleCut_(),
+    log_(false)
+{
+    checkKeys(dict, typeName);
+    search_ = readChoice(dict, "search", searchTypeNames, searchType::cached);
+    holeCutting_ =
+        readChoice
+        (
+            dict, "holeCutting", holeCuttingTypeNames,
+            holeCuttingType::incremental
+        );
+    readNumbers(dict);
+    readSearchBox(dict, typeName);
+    readNoHoleCut(dict, nZones);
 }
 
 
