@@ -22,6 +22,7 @@ License
 
 #include "flightDataFunctionObject.H"
 #include "stepTimers.H"
+#include "flightController.H"
 #include "Time.H"
 
 #include <limits>
@@ -202,6 +203,19 @@ void Foam::functionObjects::flightData::addTimers
 }
 
 
+void Foam::functionObjects::flightData::addControl
+(
+    flightDataFile::row& r
+) const
+{
+    const flightController* controller = motion_->model().controller();
+    if (controller)
+    {
+        addEntry(r, "control", controller->recordNames(), controller->record());
+    }
+}
+
+
 Foam::flightDataFile::row
 Foam::functionObjects::flightData::makeRow(const bool withLoads) const
 {
@@ -213,6 +227,7 @@ Foam::functionObjects::flightData::makeRow(const bool withLoads) const
     addJoints(r, withLoads);
     addBodies(r, withLoads);
     addTimers(r, withLoads);
+    addControl(r);
     return r;
 }
 

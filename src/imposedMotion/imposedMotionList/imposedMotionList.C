@@ -337,6 +337,17 @@ const Foam::imposedMotionBlend& Foam::imposedMotionList::blend
 }
 
 
+Foam::wordList Foam::imposedMotionList::names() const
+{
+    wordList entries(size());
+    forAll(*this, motioni)
+    {
+        entries[motioni] = operator[](motioni).name();
+    }
+    return entries;
+}
+
+
 Foam::scalar Foam::imposedMotionList::get
 (
     const word& entryName,

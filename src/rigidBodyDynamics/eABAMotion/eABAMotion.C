@@ -25,6 +25,8 @@ License
 #include "Time.H"
 #include "IOdictionary.H"
 #include "StringStream.H"
+#include "flightController.H"
+#include "dictionaryKeys.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -188,12 +190,25 @@ Foam::RBD::eABAMotion::eABAMotion
     report_(false),
     freshStart_(!isRestart(stateDict)),
     solver_(nullptr),
+    controller_(nullptr),
     qDdotPrev_(nDoF(), Zero)
 {
+    if (dict.found("controller", keyType::LITERAL))
+    {
+        controller_ = flightController::New
+        (
+            dict.subDict("controller"), *this, imposedMotions_
+        );
+    }
+
     if (!freshStart_)
     {
-        // The parameters and blends set by a controller
+        // The parameters and blends set by a controller, and its state
         imposedMotions_.readState(stateDict);
+        if (controller_.valid())
+        {
+            controller_->readState(stateDict);
+        }
     }
 
     readCoeffs(dict);
@@ -222,7 +237,7 @@ const Foam::wordList& Foam::RBD::eABAMotion::keys()
     ({
         "solver", "nIter", "accelerationRelaxation", "accelerationDamping",
         "report", "g", "bodies", "restraints", "imposedMotion",
-        "ImposedMotion"
+        "ImposedMotion", "controller"
     });
 
     return modelKeys;
@@ -235,16 +250,7 @@ void Foam::RBD::eABAMotion::checkKeys
     const wordList& allowed
 )
 {
-    for (const entry& e : dict)
-    {
-        if (!allowed.found(e.keyword()))
-        {
-            FatalIOErrorInFunction(dict)
-                << "unknown entry '" << e.keyword() << "' in " << dict.name()
-                << ": allowed keys are " << flatOutput(allowed)
-                << exit(FatalIOError);
-        }
-    }
+    checkDictionaryKeys(dict, allowed);
 }
 
 
@@ -257,6 +263,20 @@ Foam::spatialTransform Foam::RBD::eABAMotion::X00(const label bodyID) const
     }
 
     return X00_[bodyID];
+}
+
+
+void Foam::RBD::eABAMotion::newTime()
+{
+    motionState0_ = motionState_;
+
+    if (controller_.valid())
+    {
+        // The model's kinematics of motionState_ (whatever was evaluated
+        // since the step's solve), then the controller's measures
+        forwardDynamicsCorrection(motionState_);
+        controller_->update(motionState_);
+    }
 }
 
 
@@ -404,6 +424,10 @@ bool Foam::RBD::eABAMotion::writeState(const objectRegistry& db) const
     IOdictionary dict(stateIO(db, IOobject::NO_READ));
     motionState_.write(dict);
     imposedMotions_.writeState(dict);
+    if (controller_.valid())
+    {
+        controller_->writeState(dict);
+    }
 
     const bool ok = dict.regIOobject::writeObject
     (
@@ -514,6 +538,13 @@ void Foam::RBD::eABAMotion::write(Ostream& os) const
     os.writeEntry("g", g());
 
     imposedMotions_.write(os);
+
+    if (controller_.valid())
+    {
+        os.beginBlock("controller");
+        controller_->write(os);
+        os.endBlock();
+    }
 }
 
 
