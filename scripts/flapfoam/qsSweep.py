@@ -85,8 +85,9 @@ class SweepError(Exception):
     allowed."""
 
 
-def parseValues(name, spec):
-    """The values of one grid entry NAME=SPEC."""
+def parseValues(name, spec, bounds):
+    """The values of one grid entry NAME=SPEC, each in the open range
+    bounds (lo, hi)."""
     try:
         if spec.count(":") == 2:
             lo, hi, n = spec.split(":")
@@ -99,7 +100,7 @@ def parseValues(name, spec):
     except ValueError:
         raise SweepError("-grid %s=%s: not allowed (LO:HI:N with N >= 1,"
                          " V1,V2,... or V; numbers)" % (name, spec))
-    lo, hi = PARAMETERS[name][2]
+    lo, hi = bounds
     for v in values:
         if not (math.isfinite(v) and lo < v < hi):
             raise SweepError("-grid %s=%s: value %r not allowed (%s < %s < %s)"
@@ -107,17 +108,19 @@ def parseValues(name, spec):
     return values
 
 
-def parseGrid(text):
-    """{name: [values]} of -grid "NAME=SPEC ..." (order kept)."""
+def parseGrid(text, bounds=None):
+    """{name: [values]} of -grid "NAME=SPEC ..." (order kept); bounds:
+    {NAME: (lo, hi)} of the allowed names (default: PARAMETERS')."""
+    bounds = bounds or {n: p[2] for n, p in PARAMETERS.items()}
     grid = {}
     for word in text.split():
         name, eq, spec = word.partition("=")
-        if name not in PARAMETERS or not eq:
+        if name not in bounds or not eq:
             raise SweepError("-grid '%s': not allowed (NAME=SPEC, NAME one"
-                             " of: %s)" % (word, ", ".join(PARAMETERS)))
+                             " of: %s)" % (word, ", ".join(bounds)))
         if name in grid:
             raise SweepError("-grid: %s given twice" % name)
-        grid[name] = parseValues(name, spec)
+        grid[name] = parseValues(name, spec, bounds[name])
     if not grid:
         raise SweepError("-grid '%s': not allowed (at least one NAME=SPEC)"
                          % text)
