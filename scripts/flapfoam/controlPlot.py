@@ -276,7 +276,7 @@ def metricRows(runs, bandText, settle):
 def printTable(rows, runs):
     """The metrics in display units (mm, deg)."""
     terms = {s.label: s for r in runs for s in r.terms}
-    print("%-16s %-14s %10s %8s %11s %11s %11s %6s" % (
+    print("%-16s %-14s %11s %9s %11s %11s %11s %6s" % (
         "run", "quantity", "band", "settled", "max|e|", "mean e",
         "rms e", "inBand"))
     for row in rows:

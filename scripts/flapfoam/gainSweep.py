@@ -15,9 +15,9 @@ set-points (flapfoam.controlPlot's metrics).
 
 Grid: NAME=LO:HI:N (N values, LO and HI included), NAME=V1,V2,... or
 NAME=V (flapfoam.qsSweep's grid), NAME = LOOP.TERM.GAIN, GAIN one of Kp Ki
-Kd: the entry eABAMeshMotionCoeffs/controller/loops/LOOP/terms/TERM/GAIN
-of the case's dictionary with the variant (the dictionary's value, or
-none, elsewhere).  The case (default: the body-wing drone) is set up once
+Kd rateSetPoint (a constant): the entry eABAMeshMotionCoeffs/controller/
+loops/LOOP/terms/TERM/GAIN of the case's dictionary with the variant (the
+dictionary's value, or none, elsewhere).  The case (default: the body-wing drone) is set up once
 by its Allrun -model quasiSteady -variant V -cycles 1 -deltaT DT
 (DIR/template, log DIR/log.template); every point is a copy of it
 (DIR/pNNNNN, removed after its run unless -keep; no step timers) run by
@@ -56,7 +56,7 @@ from flapfoam.controlPlot import ControlPlotError
 from flapfoam.qsSweep import (Sweep, SweepError, edges, gridPoints, mapPair,
                               parseGrid, writeTable)
 
-GAINS = ("Kp", "Ki", "Kd")
+GAINS = ("Kp", "Ki", "Kd", "rateSetPoint")
 
 
 def foamDictionary(*args):
