@@ -209,24 +209,31 @@ class Run:
 
     def metrics(self, label, band, settle):
         """{METRICS} of the controlled quantity label after settle."""
-        t, e = self.t, self.errors[label]
-        out = np.flatnonzero(np.abs(e) > band)
-        if len(out) == 0:
-            settling = t[0]
-        elif out[-1] == len(t) - 1:
-            settling = math.inf
-        else:
-            settling = t[out[-1] + 1]
-        after = e[t >= settle]
-        if len(after) == 0:
+        if not settle <= self.t[-1]:
             raise ControlPlotError("-settle %g: not allowed (before the end"
                                    " of %s, t = %g s)" % (settle, self.case,
-                                                          t[-1]))
-        worst = float(np.max(np.abs(after)))
-        return {"settlingTime": float(settling), "maxAbsError": worst,
-                "meanError": float(np.mean(after)),
-                "rmsError": float(np.sqrt(np.mean(after**2))),
-                "inBand": int(worst <= band and np.isfinite(worst))}
+                                                          self.t[-1]))
+        return errorMetrics(self.t, self.errors[label], band, settle)
+
+
+def errorMetrics(t, e, band, settle):
+    """{METRICS} of the error e at the times t, band and settle T: the
+    settling time (the row after the last one out of the band; t[0] if
+    none is, inf if the last is), max |e|, mean e, rms e after T, and
+    whether max |e| <= band."""
+    out = np.flatnonzero(np.abs(e) > band)
+    if len(out) == 0:
+        settling = t[0]
+    elif out[-1] == len(t) - 1:
+        settling = math.inf
+    else:
+        settling = t[out[-1] + 1]
+    after = e[t >= settle]
+    worst = float(np.max(np.abs(after)))
+    return {"settlingTime": float(settling), "maxAbsError": worst,
+            "meanError": float(np.mean(after)),
+            "rmsError": float(np.sqrt(np.mean(after**2))),
+            "inBand": int(worst <= band and np.isfinite(worst))}
 
 
 def parseBands(text, terms):

@@ -17,14 +17,15 @@ Grid: NAME=LO:HI:N (N values, LO and HI included), NAME=V1,V2,... or
 NAME=V (flapfoam.qsSweep's grid), NAME = LOOP.TERM.GAIN, GAIN one of Kp Ki
 Kd rateSetPoint (a constant): the entry eABAMeshMotionCoeffs/controller/
 loops/LOOP/terms/TERM/GAIN of the case's dictionary with the variant (the
-dictionary's value, or none, elsewhere).  The case (default: the body-wing drone) is set up once
-by its Allrun -model quasiSteady -variant V -cycles 1 -deltaT DT
-(DIR/template, log DIR/log.template); every point is a copy of it
-(DIR/pNNNNN, removed after its run unless -keep; no step timers) run by
-rigidBodySimulate -bodyLoad aerodynamics for -cycles cycles, -np runs at
-a time.  -deltaT: the fixed step (default 1e-4 s, 500 steps per cycle of
-20 Hz: z, x and theta within 0.1 mm, 0.2 mm and 0.012 deg of the case's
-1e-5 s over 20 cycles); a row of flight data every 25 steps.
+dictionary's value, or none, elsewhere).  The case (default: the
+body-wing drone) is set up once by its Allrun -model quasiSteady -variant
+V -cycles 1 -deltaT DT (DIR/template, log DIR/log.template); every
+point is a copy of it (DIR/pNNNNN, removed after its run unless -keep or
+it fails; no step timers) run by rigidBodySimulate -bodyLoad
+aerodynamics for -cycles cycles, -np runs at a time.  -deltaT: the
+fixed step (default 1e-4 s, 500 steps per cycle of 20 Hz: the BW drone's
+z, x and theta within 0.1 mm, 0.2 mm and 0.012 deg of the case's 1e-5 s
+over 20 cycles); a row of flight data every 25 steps.
 
 Writes PREFIX.csv: per point the gains, per controlled quantity
 LOOP.TERM its settlingTime, maxAbsError, meanError, rmsError and inBand
