@@ -221,7 +221,7 @@ def errorMetrics(t, e, band, settle):
     settling time (the row after the last one out of the band; t[0] if
     none is, inf if the last is), max |e|, mean e, rms e after T, and
     whether max |e| <= band."""
-    out = np.flatnonzero(np.abs(e) > band)
+    out = np.flatnonzero(~(np.abs(e) <= band))      # NaN is out
     if len(out) == 0:
         settling = t[0]
     elif out[-1] == len(t) - 1:

@@ -171,7 +171,7 @@ class GainSweep(Sweep):
                 dict.fromkeys(controlPlot.METRICS, math.nan)
             row.update(("%s.%s" % (s.label, k), v) for k, v in m.items())
             ratios.append(m["maxAbsError"]/band)
-        row["score"] = max(ratios)
+        row["score"] = float(np.max(ratios))     # NaN if one is
         row["inBand"] = int(bool(row["score"] <= 1))
         if not self.keep and rc == 0:
             shutil.rmtree(case)
