@@ -305,21 +305,19 @@ def plotStates(runs, out, bands, settle):
                              figsize=(9, 2.6*len(labels)))
     for ax, label in zip(axes[:, 0], labels):
         for i, r in enumerate(runs):
-            s = next((s for s in r.terms if s.label == label), None)
-            if s is None:
-                continue
-            c = "C%d" % (i % 10)
-            ref = s.setPoint(r.t)
-            ax.plot(r.t, s.scale*r.measures[label], color=c, lw=0.8,
-                    label=r.name)
-            ax.plot(r.t, s.scale*ref, "--", color=c, lw=0.8)
-            if i == 0:
-                after = r.t >= settle
-                ax.fill_between(r.t[after], s.scale*(ref - bands[label])
-                                [after], s.scale*(ref + bands[label])[after],
-                                color="0.85", lw=0, label="band")
+            for s in (s for s in r.terms if s.label == label):
+                unit, c, ref = s.unit, "C%d" % (i % 10), s.setPoint(r.t)
+                ax.plot(r.t, s.scale*r.measures[label], color=c, lw=0.8,
+                        label=r.name)
+                ax.plot(r.t, s.scale*ref, "--", color=c, lw=0.8)
+                if i == 0:
+                    after = r.t >= settle
+                    ax.fill_between(
+                        r.t[after], s.scale*(ref - bands[label])[after],
+                        s.scale*(ref + bands[label])[after], color="0.85",
+                        lw=0, label="band")
         ax.axvline(settle, color="k", lw=0.5)
-        ax.set_ylabel("%s [%s]" % (label, s.unit))
+        ax.set_ylabel("%s [%s]" % (label, unit))
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=7, loc="best")
     axes[-1, 0].set_xlabel("t [s]")
