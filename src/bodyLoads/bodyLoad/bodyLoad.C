@@ -21,6 +21,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "bodyLoad.H"
+#include "treeBody.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -53,28 +54,7 @@ Foam::label Foam::bodyLoad::treeBodyID
     const dictionary& bodyDict
 )
 {
-    // The tree's bodies have the IDs 0 .. nBodies-1 (merged bodies negative
-    // ones): look the name up among them, so that an unknown name gets the
-    // same FatalIOError as a merged one (model.bodyID fails without naming
-    // the dictionary)
-    label bodyID = -1;
-    for (label bi = 0; bi < model.nBodies() && bodyID < 0; ++bi)
-    {
-        if (model.name(bi) == name)
-        {
-            bodyID = bi;
-        }
-    }
-
-    if (bodyID < 0)
-    {
-        FatalIOErrorInFunction(bodyDict)
-            << "body " << name << " cannot carry patches, a cellZone or a wing:"
-            << " it is not a body of the tree (unknown, or merged: merged"
-            << " bodies move with their master)" << exit(FatalIOError);
-    }
-
-    return bodyID;
+    return Foam::treeBodyID(model, name, bodyDict);
 }
 
 

@@ -85,6 +85,15 @@ Foam::flightControllers::PID::PID
 
 // * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * * //
 
+void Foam::flightControllers::PID::start()
+{
+    for (controlLoop& loop : loops_)
+    {
+        loop.start();
+    }
+}
+
+
 void Foam::flightControllers::PID::control(const scalar t, const scalar dt)
 {
     for (controlLoop& loop : loops_)

@@ -131,6 +131,15 @@ Foam::scalar Foam::controlLoop::saturate(const scalar u) const
 }
 
 
+void Foam::controlLoop::start()
+{
+    for (controlTerm& term : terms_)
+    {
+        term.start();
+    }
+}
+
+
 Foam::scalar Foam::controlLoop::update(const scalar t, const scalar dt)
 {
     const bool freeze = clipped_;

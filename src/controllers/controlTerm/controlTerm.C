@@ -23,6 +23,7 @@ License
 
 #include "controlTerm.H"
 #include "dictionaryKeys.H"
+#include "treeBody.H"
 
 // * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * * //
 
@@ -36,45 +37,26 @@ Foam::controlTerm::quantityNames
 });
 
 
+const Foam::Enum<Foam::controlTerm::derivativeType>
+Foam::controlTerm::derivativeNames
+({
+    { derivativeType::state, "state" },
+    { derivativeType::mean, "mean" }
+});
+
+
 const Foam::wordList& Foam::controlTerm::keys()
 {
     static const wordList k
     ({
         "body", "quantity", "component", "setPoint", "rateSetPoint",
-        "Kp", "Ki", "Kd"
+        "derivative", "Kp", "Ki", "Kd"
     });
     return k;
 }
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-Foam::label Foam::controlTerm::findBody(const dictionary& dict) const
-{
-    // The tree's bodies are 0 .. nBodies-1 (merged bodies have negative
-    // IDs and no state of their own to measure)
-    for (label bi = 0; bi < model_.nBodies(); ++bi)
-    {
-        if (model_.name(bi) == body_)
-        {
-            return bi;
-        }
-    }
-
-    wordList names(model_.nBodies());
-    forAll(names, bi)
-    {
-        names[bi] = model_.name(bi);
-    }
-
-    FatalIOErrorInFunction(dict)
-        << "body " << body_ << " of " << dict.name() << " is not a body of"
-        << " the tree (unknown, or merged into another): the bodies are "
-        << flatOutput(names) << exit(FatalIOError);
-
-    return -1;
-}
-
 
 Foam::scalar Foam::controlTerm::measure() const
 {
@@ -137,17 +119,22 @@ Foam::controlTerm::controlTerm
     name_(dict.dictName()),
     model_(model),
     body_(dict.get<word>("body")),
-    bodyID_(findBody(dict)),
+    bodyID_(treeBodyID(model, body_, dict)),
     quantity_(quantityNames.get("quantity", dict)),
     component_(0),
     setPoint_(Function1<scalar>::New("setPoint", dict)),
     rateSetPoint_(nullptr),
+    derivative_
+    (
+        derivativeNames.getOrDefault("derivative", dict, derivativeType::state)
+    ),
     Kp_(dict.getOrDefault<scalar>("Kp", 0)),
     Ki_(dict.getOrDefault<scalar>("Ki", 0)),
     Kd_(dict.getOrDefault<scalar>("Kd", 0)),
     e_(0),
     eDot_(0),
-    integral_(0)
+    integral_(0),
+    previous_(0)
 {
     checkDictionaryKeys(dict, keys());
 
@@ -165,13 +152,13 @@ Foam::controlTerm::controlTerm
         quantity_ == quantityType::position
      || quantity_ == quantityType::orientation;
 
-    if (Kd_ != 0 && !hasRate)
+    if (Kd_ != 0 && !hasRate && derivative_ == derivativeType::state)
     {
         FatalIOErrorInFunction(dict)
             << "Kd " << Kd_ << " of " << dict.name() << ": the quantity "
             << quantityNames[quantity_] << " has no rate in the state (Kd is"
-            << " allowed for position and orientation only)"
-            << exit(FatalIOError);
+            << " allowed for position and orientation only, or with"
+            << " derivative mean)" << exit(FatalIOError);
     }
 
     if (dict.found("rateSetPoint", keyType::LITERAL))
@@ -190,16 +177,26 @@ Foam::scalar Foam::controlTerm::update
     const bool freeze
 )
 {
-    e_ = measure() - setPoint_->value(t);
+    const scalar m = measure();
+    const scalar rateSetPoint =
+        rateSetPoint_.valid() ? rateSetPoint_->value(t) : 0;
+
+    e_ = m - setPoint_->value(t);
 
     eDot_ = 0;
-    if (quantity_ == quantityType::position
-     || quantity_ == quantityType::orientation)
+    if (derivative_ == derivativeType::mean)
     {
-        eDot_ =
-            measureRate()
-          - (rateSetPoint_.valid() ? rateSetPoint_->value(t) : 0);
+        eDot_ = dt > 0 ? (m - previous_)/dt - rateSetPoint : 0;
     }
+    else if
+    (
+        quantity_ == quantityType::position
+     || quantity_ == quantityType::orientation
+    )
+    {
+        eDot_ = measureRate() - rateSetPoint;
+    }
+    previous_ = m;
 
     if (!freeze)
     {
@@ -215,6 +212,7 @@ void Foam::controlTerm::writeState(dictionary& dict) const
     dict.add("error", e_);
     dict.add("errorRate", eDot_);
     dict.add("integral", integral_);
+    dict.add("previous", previous_);
 }
 
 
@@ -223,6 +221,7 @@ void Foam::controlTerm::readState(const dictionary& dict)
     e_ = dict.get<scalar>("error");
     eDot_ = dict.get<scalar>("errorRate");
     integral_ = dict.get<scalar>("integral");
+    previous_ = dict.get<scalar>("previous");
 }
 
 
@@ -236,6 +235,7 @@ void Foam::controlTerm::write(Ostream& os) const
     {
         rateSetPoint_->writeData(os);
     }
+    os.writeEntry("derivative", derivativeNames[derivative_]);
     os.writeEntry("Kp", Kp_);
     os.writeEntry("Ki", Ki_);
     os.writeEntry("Kd", Kd_);

@@ -148,6 +148,7 @@ void Foam::flightController::update(const RBD::rigidBodyModelState& state)
 
     if (tNext_ < 0)
     {
+        start();
         tLast_ = t;
         tNext_ = t + T;
     }
