@@ -284,13 +284,22 @@ TEST(Errors, WangParametrizationBadInput)
     );
 
     // Unknown motionType lists the allowed ones; the authors' controllers
-    // are named as such
+    // are named as such, the xzth ones with their converter
     expectMotionError
     (
         wangParametrizationText("motionType midStartControl_z_PD;"),
         {
             "'motionType'", "midStartControl_z_PD", "flight controller",
-            "not supported", "standard", "midStart", "midStart_2wings"
+            "not a motion type of flapFoam", "Closed-loop flight",
+            "standard", "midStart", "midStart_2wings"
+        }
+    );
+    expectMotionError
+    (
+        wangParametrizationText("motionType midStartControl_xzth_linearPD;"),
+        {
+            "'motionType'", "midStartControl_xzth_linearPD",
+            "flight controller", "flapfoam.authorsControl"
         }
     );
     expectMotionError

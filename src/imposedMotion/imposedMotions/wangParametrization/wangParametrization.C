@@ -101,13 +101,25 @@ Foam::imposedMotions::wangParametrization::readMotionType
         // The authors' controllers: midStartControl_z_PD, ..._xzth_PD, ...
         const bool controller = name.starts_with("midStartControl");
 
+        // Their xzth controllers convert to flapFoam's controller
+        const bool xzth = name.starts_with("midStartControl_xzth");
+
         FatalIOErrorInFunction(dict)
             << "Entry 'motionType' = " << name
             << (
                    controller
                  ? " (a flight controller of the paper authors' code)"
-                   " is not supported by flapFoam"
+                   " is not a motion type of flapFoam, where a controller"
+                   " entry sets the motions' parameters"
                  : " is not a valid motion type"
+               )
+            << (
+                   xzth
+                 ? " (python3 -m flapfoam.authorsControl <this file> writes"
+                   " the equivalent imposedMotion and controller entries)"
+                 : controller
+                 ? " (README: Closed-loop flight)"
+                 : ""
                )
             << ": allowed" << allowed.str().c_str()
             << nl << exit(FatalIOError);
