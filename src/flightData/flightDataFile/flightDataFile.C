@@ -258,12 +258,31 @@ void writeRow
 }
 
 
+//- File access without HDF5's file locks: a reader of the flight data
+//- during the run (h5py, a plot of the progress) holds a shared lock that
+//- makes a locking writer's open fail, which would stop the run.  The file
+//- is closed between steps, so a reader sees whole rows but for the one
+//- being written.
+struct unlockedAccess
+{
+    handle fapl;
+
+    unlockedAccess()
+    :
+        fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose)
+    {
+        H5Pset_file_locking(fapl, false, true);
+    }
+};
+
+
 //- Open a file read-write (errors of the library silenced: ours name the
-//- file)
+//- file), without file locks
 hid_t openFile(const fileName& path)
 {
     H5Eset_auto(H5E_DEFAULT, nullptr, nullptr);
-    return H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    const unlockedAccess access;
+    return H5Fopen(path.c_str(), H5F_ACC_RDWR, access.fapl);
 }
 
 
@@ -321,7 +340,8 @@ label datasetRows(const hid_t file, const word& name)
 Foam::string Foam::flightDataFile::damage(const fileName& path)
 {
     H5Eset_auto(H5E_DEFAULT, nullptr, nullptr);
-    handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+    const unlockedAccess access;
+    handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, access.fapl), H5Fclose);
     if (file < 0)
     {
         return "not a readable HDF5 file (truncated or corrupt)";
@@ -428,9 +448,10 @@ Foam::flightDataFile::flightDataFile
     else
     {
         makeFolder(path_.path());
+        const unlockedAccess access;
         handle file
         (
-            H5Fcreate(path_.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, H5P_DEFAULT),
+            H5Fcreate(path_.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, access.fapl),
             H5Fclose
         );
         check(file, path_, "create");
