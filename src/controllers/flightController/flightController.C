@@ -155,7 +155,7 @@ void Foam::flightController::update(const RBD::rigidBodyModelState& state)
 
     // Due at the first step start at or after tNext (round-off of the
     // accumulated times allowed)
-    if (t < tNext_ - 1e-9*T)
+    if (!due(t))
     {
         return;
     }

@@ -270,10 +270,11 @@ void Foam::RBD::eABAMotion::newTime()
 {
     motionState0_ = motionState_;
 
-    if (controller_.valid())
+    if (controller_.valid() && controller_->due(motionState_.t()))
     {
         // The model's kinematics of motionState_ (whatever was evaluated
-        // since the step's solve), then the controller's measures
+        // since the step's solve), then the controller's measures: only
+        // at an update, not every step
         forwardDynamicsCorrection(motionState_);
         controller_->update(motionState_);
     }
