@@ -4,7 +4,8 @@
 # failure: run, motionCycle, plots, result, flightData, quasiSteady,
 # vacuum.  Needs:
 # python (Debian's python3), the case folder as the working directory,
-# runs/ (the logs), checkRun (the single-wing drone's scripts/checkRun.py).
+# testRuns (the folder of the checks' runs and logs, set by the Alltest),
+# checkRun (the single-wing drone's scripts/checkRun.py).
 #------------------------------------------------------------------------------
 
 projectScripts="$(cd "${BASH_SOURCE[0]%/*}" && pwd -P)"
@@ -23,7 +24,7 @@ laminar=(-set constant/turbulenceProperties simulationType laminar)
 checkRun="$projectScripts/../cases/singleWingDrone/scripts/checkRun.py"
 
 # run [-each] <label> <Allrun options...>: the run's log in
-# runs/log.Alltest.<label>; one line for the run (completed, no orphan at
+# $testRuns/log.Alltest.<label>; one line for the run (completed, no orphan at
 # any step when the case checks orphans) and the FAIL lines of its checks;
 # with -each every PASS/FAIL line of the run instead, and a FAIL line if
 # it does not complete
@@ -33,7 +34,7 @@ run()
     [ "$1" = -each ] && { each=true; shift; }
     local label="$1"
     shift
-    local log="runs/log.Alltest.$label"
+    local log="$testRuns/log.Alltest.$label"
     local t0=$SECONDS
     ./Allrun "$@" > "$log" 2>&1
     local rc=$?
@@ -67,23 +68,23 @@ run()
 }
 
 # plots <label> <run folder> <PNG names...>: scripts/plotRun.py on the run
-# folder (log runs/log.plotRun); every PNG in <run folder>/plots, not empty
+# folder (log $testRuns/log.plotRun); every PNG in <run folder>/plots, not empty
 plots()
 {
     local label="$1" dir="$2"
     shift 2
-    "$python" scripts/plotRun.py -case "$dir" > runs/log.plotRun 2>&1
+    "$python" scripts/plotRun.py -case "$dir" > "$testRuns/log.plotRun" 2>&1
     local p n=0 error
     for p in "$@"
     do
         [ -s "$dir/plots/$p.png" ] && n=$((n + 1))
     done
-    error="$(grep -o 'max |q - analytic|/amplitude = [^ ]*' runs/log.plotRun)"
+    error="$(grep -o 'max |q - analytic|/amplitude = [^ ]*' "$testRuns/log.plotRun")"
     if [ "$n" -eq "$#" ]
     then
         echo "PASS [$label] plots: $n PNGs in $dir/plots${error:+; $error}"
     else
-        echo "FAIL [$label] plots: $n of $# PNGs (see runs/log.plotRun)"
+        echo "FAIL [$label] plots: $n of $# PNGs (see $testRuns/log.plotRun)"
         status=1
     fi
 }
@@ -96,7 +97,7 @@ motionCycle()
 {
     local label="$1" dir="$2"
     shift 2
-    local log="runs/log.Alltest.$label"
+    local log="$testRuns/log.Alltest.$label"
     local t0=$SECONDS
     ./Allrun -clean -level tiny -motionOnly -noMeshCheck -case "$dir" "$@" \
         > "$log" 2>&1
@@ -156,7 +157,7 @@ copiedCase()
     env -i HOME="$HOME" PATH=/usr/bin:/bin bash -c \
         'a=("$@"); set --; . "$0/etc/bashrc" && exec nice -n 10 "${a[@]}"' \
         "$FLAPFOAM_PROJECT_DIR" "$copy/Allrun" "$@" \
-        > "runs/log.Alltest.$label" 2>&1
+        > "$testRuns/log.Alltest.$label" 2>&1
     rc=$?
     if [ "$rc" -eq 0 ]
     then
@@ -164,7 +165,7 @@ copiedCase()
              "Allrun $* ($((SECONDS - t0)) s)"
     else
         echo "FAIL [$label] the copy's Allrun $* exited $rc (see" \
-             "runs/log.Alltest.$label)"
+             "$testRuns/log.Alltest.$label)"
         status=1
     fi
     badInputDir="$copy" badInput "$label environment not set" \
@@ -193,7 +194,7 @@ flightData()
 
 # quasiSteady <label> <run folder> <rows> <Allrun options...>: Allrun
 # -model quasiSteady -noPlot -case <run folder> <options> completes (log
-# runs/log.Alltest.<label>); its flight data complete (<rows> rows,
+# $testRuns/log.Alltest.<label>); its flight data complete (<rows> rows,
 # attributes level none, stencil none, model quasiSteady, every value
 # finite after the start row) and the same times and q of every joint as
 # rigidBodySimulate's joints.dat (15 digits: the HDF5 values written so,
@@ -202,7 +203,7 @@ quasiSteady()
 {
     local label="$1" dir="$2" rows="$3"
     shift 3
-    local t0=$SECONDS log="runs/log.Alltest.$label"
+    local t0=$SECONDS log="$testRuns/log.Alltest.$label"
     if ./Allrun -model quasiSteady -noPlot -case "$dir" "$@" > "$log" 2>&1
     then
         echo "PASS [$label] Allrun -model quasiSteady $* completed" \
