@@ -280,7 +280,7 @@ TEST(Errors, quasiSteadyBadEntries)
         {"nStrips 0;", {"nStrips", ">= 1"}},
         {"rho -1;", {"rho", "> 0"}},
         {"body ghost;", {"ghost", "not a body of the tree"}},
-        {"phse 1;", {"unknown key phse", "nStrips"}},
+        {"phse 1;", {"Unknown key 'phse'", "nStrips"}},
         {"chordDistribution elliptic;", {"elliptic", "semiElliptic or table"}},
         {"type quasiStatic;", {"quasiStatic", "quasiSteady"}}
     });

@@ -314,7 +314,7 @@ TEST(Errors, WangParametrizationBadInput)
         wangParametrizationText("motiontype midStart;"),
         {
             "'motiontype'", "allowed keys", "motionType", "Aphi", "Kalpha",
-            "jointList", "body (ignored)"
+            "jointList", "authors' keys, ignored: body initialConditions"
         }
     );
 }

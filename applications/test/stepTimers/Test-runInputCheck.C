@@ -37,6 +37,7 @@ Description
 
 #include "runInputCheck.H"
 #include "functionObjectKeys.H"
+#include "dictionaryKeys.H"
 #include "runProgress.H"
 #include "IStringStream.H"
 #include "OSspecific.H"
@@ -186,15 +187,20 @@ TEST(functionObjectKeys, unknownAndStandardKeys)
         ioErrorOf([&]{ functionObjectKeys::check(bad, own); })
     );
     EXPECT_NE(msg.find("Unknown key 'Urf'"), std::string::npos) << msg;
-    EXPECT_NE(msg.find("allowed: rhoInf Uref (and those of every function"
-        " object: type libs enabled"), std::string::npos) << msg;
+    EXPECT_NE
+    (
+        msg.find("allowed keys are rhoInf Uref (and those of every function"
+            " object: type libs enabled"),
+        std::string::npos
+    ) << msg;
 
-    // checkOnly: the given keys alone
+    // checkDictionaryKeys: the given keys alone
     const std::string only
     (
-        ioErrorOf([&]{ functionObjectKeys::checkOnly(good, own); })
+        ioErrorOf([&]{ checkDictionaryKeys(good, own); })
     );
-    EXPECT_NE(only.find("allowed: rhoInf Uref"), std::string::npos) << only;
+    EXPECT_NE(only.find("allowed keys are rhoInf Uref"), std::string::npos)
+        << only;
     EXPECT_EQ(only.find("every function object"), std::string::npos) << only;
 }
 

@@ -574,7 +574,7 @@ TEST(stepTimersFunctionObject, unknownKey)
         (
             err.message().find
             (
-                "Unknown key 'nStrtup' in ; allowed: nStartup writePrecision"
+                "Unknown key 'nStrtup' in ; allowed keys are nStartup writePrecision"
             ),
             std::string::npos
         )   << err.message();

@@ -23,6 +23,7 @@ License
 
 #include "quasiSteady.H"
 #include "Tuple2.H"
+#include "dictionaryKeys.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -50,16 +51,8 @@ void Foam::wingAerodynamicsModels::quasiSteady::checkKeys
         "chordDistribution", "meanChord", "chords", "rho", "CL", "CD0",
         "CD1", "nStrips", "wind"
     });
-    for (const entry& e : dict)
-    {
-        if (!keys.found(e.keyword()))
-        {
-            FatalIOErrorInFunction(dict)
-                << "unknown key " << e.keyword() << " in wing "
-                << dict.dictName() << ": the keys of a quasiSteady wing are "
-                << keys << exit(FatalIOError);
-        }
-    }
+    dictionaryKeys(keys).named("quasiSteady wing " + dict.dictName())
+        .check(dict);
 }
 
 

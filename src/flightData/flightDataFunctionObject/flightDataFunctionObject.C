@@ -23,6 +23,7 @@ License
 #include "flightDataFunctionObject.H"
 #include "fvMesh.H"
 #include "functionObjectKeys.H"
+#include "dictionaryKeys.H"
 #include "addToRunTimeSelectionTable.H"
 #include "IOdictionary.H"
 #include "OSspecific.H"
@@ -309,10 +310,7 @@ void Foam::functionObjects::flightData::readCoefficients
                 << " needs one" << exit(FatalIOError);
         }
         const dictionary& bd = coeffs.subDict(body);
-        functionObjectKeys::checkOnly
-        (
-            bd, wordList({"area", "chord", "momentAbout"})
-        );
+        checkDictionaryKeys(bd, wordList({"area", "chord", "momentAbout"}));
         bodyIDs_[i] = model.bodyID(body);
         area_[i] = bd.get<scalar>("area");
         chord_[i] = bd.get<scalar>("chord");

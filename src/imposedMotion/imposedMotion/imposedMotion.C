@@ -21,7 +21,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "imposedMotion.H"
-#include "StringStream.H"
+#include "dictionaryKeys.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -61,42 +61,29 @@ void Foam::imposedMotion::checkKeys() const
     allowed.append(jointsKey());
     const wordList ignored(ignoredKeys());
 
-    // " a b c"
-    const auto spaced = [](const wordList& keys, const char* suffix)
-    {
-        OStringStream os;
-        for (const word& k : keys)
-        {
-            os << ' ' << k << suffix;
-        }
-        return os.str();
-    };
+    dictionaryKeys(allowed)
+        .named("'" + name_ + "' (type " + type() + ")")
+        .alsoAllowing(ignored, "the paper authors' keys, ignored")
+        .check(dict_);
 
     wordList ignoredFound;
-
     for (const entry& e : dict_)
     {
-        const word& key = e.keyword();
-
-        if (ignored.found(key))
+        if (ignored.found(e.keyword()))
         {
-            ignoredFound.append(key);
-        }
-        else if (!allowed.found(key))
-        {
-            FatalIOErrorInFunction(dict_)
-                << "Unknown entry '" << key << "' in '" << name_
-                << "' (type " << type() << "): allowed keys are"
-                << spaced(allowed, "").c_str()
-                << spaced(ignored, " (ignored)").c_str() << nl
-                << exit(FatalIOError);
+            ignoredFound.append(e.keyword());
         }
     }
 
     if (ignoredFound.size())
     {
-        IOWarningInFunction(dict_)
-            << "Entries" << spaced(ignoredFound, "").c_str() << " of '"
+        OSstream& os = IOWarningInFunction(dict_);
+        os  << "Entries";
+        for (const word& key : ignoredFound)
+        {
+            os  << ' ' << key;
+        }
+        os  << " of '"
             << name_ << "' (type " << type() << ") are keys of the paper"
             << " authors' code that flapFoam does not use: ignored" << endl;
     }

@@ -21,7 +21,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "functionObjectKeys.H"
-#include "error.H"
+#include "dictionaryKeys.H"
 
 // * * * * * * * * * * * * * * * * Global Data * * * * * * * * * * * * * * * //
 
@@ -35,64 +35,7 @@ const Foam::wordList Foam::functionObjectKeys::standard
 });
 
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-
-//- The words on one line, space separated
-std::string joined(const Foam::wordList& words)
-{
-    std::string s;
-    for (const Foam::word& w : words)
-    {
-        s += (s.empty() ? "" : " ") + w;
-    }
-    return s;
-}
-
-
-//- FatalIOError naming the first key of dict not in allowed nor in
-//- standard (if any), listing them
-void checkKeys
-(
-    const Foam::dictionary& dict,
-    const Foam::wordList& allowed,
-    const Foam::wordList& standard
-)
-{
-    for (const Foam::word& key : dict.toc())
-    {
-        if (!allowed.found(key) && !standard.found(key))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Unknown key '" << key << "' in " << dict.dictName()
-                << "; allowed: " << joined(allowed).c_str();
-            if (standard.size())
-            {
-                Foam::FatalIOError
-                    << " (and those of every function object: "
-                    << joined(standard).c_str() << ")";
-            }
-            Foam::FatalIOError << Foam::exit(Foam::FatalIOError);
-        }
-    }
-}
-
-} // End anonymous namespace
-
-
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
-
-void Foam::functionObjectKeys::checkOnly
-(
-    const dictionary& dict,
-    const wordList& allowed
-)
-{
-    checkKeys(dict, allowed, wordList());
-}
-
 
 void Foam::functionObjectKeys::check
 (
@@ -100,7 +43,9 @@ void Foam::functionObjectKeys::check
     const wordList& own
 )
 {
-    checkKeys(dict, own, standard);
+    dictionaryKeys(own)
+        .alsoAllowing(standard, "those of every function object")
+        .check(dict);
 }
 
 

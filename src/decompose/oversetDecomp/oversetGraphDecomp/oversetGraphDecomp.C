@@ -25,6 +25,7 @@ License
 #include "couplingReport.H"
 #include "addToRunTimeSelectionTable.H"
 #include "Time.H"
+#include "dictionaryKeys.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -54,15 +55,7 @@ void Foam::oversetGraphDecomp::checkKeys() const
 {
     wordList allowed(graphPartitioner::keys);
     allowed.append(wordList({"couplings", "couplingWeight"}));
-    for (const word& key : coeffs_.toc())
-    {
-        if (!allowed.found(key))
-        {
-            FatalIOErrorInFunction(coeffs_)
-                << "Unknown key '" << key << "' in " << typeName
-                << "Coeffs; allowed: " << allowed << exit(FatalIOError);
-        }
-    }
+    dictionaryKeys(allowed).named(typeName + "Coeffs").check(coeffs_);
 }
 
 

@@ -24,6 +24,7 @@ License
 #include "octreeStencilSettings.H"
 #include "Pstream.H"
 #include "FlatOutput.H"
+#include "dictionaryKeys.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -177,16 +178,7 @@ void Foam::octreeStencilSettings::checkKeys
     const word& typeName
 )
 {
-    for (const word& key : dict.toc())
-    {
-        if (!allowedKeys.found(key))
-        {
-            FatalIOErrorInFunction(dict)
-                << key << " is not a key of method " << typeName
-                << " (misspelled?): allowed keys are "
-                << flatOutput(allowedKeys) << exit(FatalIOError);
-        }
-    }
+    dictionaryKeys(allowedKeys).named("method " + typeName).check(dict);
 }
 
 
