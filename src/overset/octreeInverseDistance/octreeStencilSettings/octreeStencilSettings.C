@@ -23,7 +23,6 @@ License
 
 #include "octreeStencilSettings.H"
 #include "Pstream.H"
-#include "FlatOutput.H"
 #include "dictionaryKeys.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
