@@ -287,14 +287,13 @@ TEST(Errors, quasiSteadyBadEntries)
     for (const auto& b : bad)
     {
         SCOPED_TRACE(b.first);
-        expectError
+        expectIOError
         (
             [&](){ wingLoad(wingEntry(b.first), q, qDot); },
-            {b.second.first, b.second.second},
-            true
+            {b.second.first, b.second.second}
         );
     }
-    expectError
+    expectIOError
     (
         [&]()
         {
@@ -305,14 +304,12 @@ TEST(Errors, quasiSteadyBadEntries)
                 qDot
             );
         },
-        {"chords", "covering 0 to length"},
-        true
+        {"chords", "covering 0 to length"}
     );
-    expectError
+    expectIOError
     (
         [&](){ wingLoad(wingEntry("chords ((0 1) (1 1));"), q, qDot); },
-        {"chords", "does not belong to chordDistribution semiElliptic"},
-        true
+        {"chords", "does not belong to chordDistribution semiElliptic"}
     );
 }
 
