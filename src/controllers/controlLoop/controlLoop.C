@@ -67,16 +67,7 @@ Foam::controlLoop::controlLoop
 {
     checkDictionaryKeys(dict, keys());
 
-    const wordList entries(motions.names());
-    if (!entries.found(entry_))
-    {
-        FatalIOErrorInFunction(dict)
-            << "entry " << entry_ << " of " << dict.name() << " is not an"
-            << " imposedMotion entry: the entries are " << flatOutput(entries)
-            << exit(FatalIOError);
-    }
-
-    const imposedMotion& motion = motions.blend(entry_).current();
+    const imposedMotion& motion = motions.current(dict, "entry");
     const wordList allowed(motion.controlKeys());
     if (!allowed.found(parameter_))
     {

@@ -81,15 +81,7 @@ Foam::flightController::flightController
     if (update_ == updateType::cycle)
     {
         cycleOf_ = dict.get<word>("cycleOf");
-        const wordList entries(motions_.names());
-        if (!entries.found(cycleOf_))
-        {
-            FatalIOErrorInFunction(dict)
-                << "cycleOf " << cycleOf_ << " of " << dict.name()
-                << " is not an imposedMotion entry: the entries are "
-                << flatOutput(entries) << exit(FatalIOError);
-        }
-        const imposedMotion& m = motions_.blend(cycleOf_).current();
+        const imposedMotion& m = motions_.current(dict, "cycleOf");
         if (m.frequencyKey().empty())
         {
             FatalIOErrorInFunction(dict)

@@ -348,6 +348,25 @@ Foam::wordList Foam::imposedMotionList::names() const
 }
 
 
+const Foam::imposedMotion& Foam::imposedMotionList::current
+(
+    const dictionary& dict,
+    const word& key
+) const
+{
+    const word entryName(dict.get<word>(key));
+    const wordList entries(names());
+    if (!entries.found(entryName))
+    {
+        FatalIOErrorInFunction(dict)
+            << key << " " << entryName << " of " << dict.name()
+            << " is not an imposedMotion entry: the entries are "
+            << flatOutput(entries) << exit(FatalIOError);
+    }
+    return blend(entryName).current();
+}
+
+
 Foam::scalar Foam::imposedMotionList::get
 (
     const word& entryName,
