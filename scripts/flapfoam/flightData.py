@@ -17,8 +17,11 @@ holds one (restarts append to it).
         log shows completed (a later "Time =" line) has its row; with
         --zero DATASET:i,j columns i, j exactly 0 in every row, with
         --moving DATASET:i column i not 0 in the last row.
-    flightData.py compare REF CASE [--tol T] [--datasets a,b] [--exclude timers]
-        the same datasets and rows, time equal, every other dataset
+    flightData.py compare REF CASE [--tol T] [--timeTol S] [--datasets a,b]
+                  [--exclude timers]
+        the same datasets and rows, time equal (to S seconds: a restart
+        starts from the written time, a straight run sums its steps; default
+        0: identical), every other dataset
         max |a - b| / max(max |REF column|, 1e-9 max |REF dataset|) <= T
         per column (timers excluded by default); one line per dataset.
 
@@ -197,11 +200,14 @@ def compare(a):
     status |= report(set(A) == set(B), "flightData %s vs %s: the same %d "
                      "datasets" % (name, ref, len(A)))
     if len(A["time"]) != len(B["time"]) or \
-            np.any(A["time"] != B["time"]):
+            np.any(np.abs(A["time"] - B["time"]) > a.timeTol):
         return report(False, "flightData %s vs %s: times differ (%d and %d "
-                      "rows)" % (name, ref, len(A["time"]), len(B["time"])))
+                      "rows, tol %g s)" % (name, ref, len(A["time"]),
+                                           len(B["time"]), a.timeTol))
     status |= report(True, "flightData %s vs %s: the same %d rows, times "
-                     "equal" % (name, ref, len(A["time"])))
+                     "equal%s" % (name, ref, len(A["time"]),
+                                  " to %g s" % a.timeTol if a.timeTol
+                                  else ""))
     worst = 0.0
     lines = []
     for d in names:
@@ -249,6 +255,7 @@ def main():
     m.add_argument("ref")
     m.add_argument("case")
     m.add_argument("--tol", type=float, default=0.0)
+    m.add_argument("--timeTol", type=float, default=0.0)
     m.add_argument("--datasets")
     m.add_argument("--exclude", default="timers")
     a = ap.parse_args()
