@@ -77,15 +77,11 @@ void Foam::imposedMotion::checkKeys() const
 
     if (ignoredFound.size())
     {
-        OSstream& os = IOWarningInFunction(dict_);
-        os  << "Entries";
-        for (const word& key : ignoredFound)
-        {
-            os  << ' ' << key;
-        }
-        os  << " of '"
-            << name_ << "' (type " << type() << ") are keys of the paper"
-            << " authors' code that flapFoam does not use: ignored" << endl;
+        IOWarningInFunction(dict_)
+            << "Entries " << dictionaryKeys::joined(ignoredFound).c_str()
+            << " of '" << name_ << "' (type " << type() << ") are keys of"
+            << " the paper authors' code that flapFoam does not use: ignored"
+            << endl;
     }
 }
 
