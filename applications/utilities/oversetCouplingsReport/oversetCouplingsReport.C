@@ -36,13 +36,15 @@ Description
 
 Usage
     \b oversetCouplingsReport [-couplings FILE] [-decomposition FILE]
-        [-ranks N]
+        [-ranks N] [-pose K]
 
     Options:
       - \par -couplings FILE (default constant/oversetCouplings)
       - \par -decomposition FILE (default constant/cellDecomposition)
       - \par -ranks N: the number of ranks (default: the largest rank + 1;
         not fewer)
+      - \par -pose K: kept pose K of the couplings alone, as if it were the
+        only pose (oversetCouplings::keepOnly: no holes); default all poses
 
     A decomposition that is not a rank >= 0 for each cell of the mesh, or
     a bad -ranks, stops with an error naming the file or the option.
@@ -105,6 +107,7 @@ int main(int argc, char *argv[])
         "decomposition", "FILE", "default constant/cellDecomposition"
     );
     argList::addOption("ranks", "N", "default: the largest rank + 1");
+    argList::addOption("pose", "K", "kept pose K alone (default: all poses)");
 
     #include "setRootCase.H"
     #include "createTime.H"
@@ -141,11 +144,26 @@ int main(int argc, char *argv[])
        + decompFile + ")").c_str()
     );
 
-    const oversetCouplings couplings(mesh, couplingsFile, mesh.nCells());
+    const label pose = runInputCheck::option<label>
+    (
+        args, "pose", -1, labelMinMax(0, labelMax),
+        "a kept pose of the couplings, an integer >= 0"
+    );
+
+    oversetCouplings couplings(mesh, couplingsFile, mesh.nCells());
+    if (pose != -1)
+    {
+        couplings.keepOnly(pose);
+    }
     const couplingGraph graph(mesh, couplings, 1, scalarField());
     Info<< "oversetCouplingsReport: " << nRanks << " ranks, " << mesh.nCells()
         << " cells, " << couplings.nPoses() << " poses of " << couplingsFile
-        << ", decomposition " << decompFile << nl;
+        << ", decomposition " << decompFile;
+    if (pose != -1)
+    {
+        Info<< ", kept pose " << pose;
+    }
+    Info<< nl;
     couplingReport(mesh, graph, couplings, decomp, nRanks)
         .write(Info, "oversetCouplingsReport");
 

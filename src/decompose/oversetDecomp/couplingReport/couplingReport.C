@@ -113,13 +113,18 @@ void Foam::couplingReport::countSamples
     {
         const label rank = decomp[acceptors[i]];
         sampled_[rank] += perSample;
+        label nRemote = 0;
         for (label j = donorStart[i]; j < donorStart[i + 1]; ++j)
         {
-            if (decomp[donors[j]] != rank)
-            {
-                remoteAcceptors_[rank] += perSample;
-                break;
-            }
+            nRemote += (decomp[donors[j]] != rank);
+        }
+        if (nRemote)
+        {
+            remoteAcceptors_[rank] += perSample;
+        }
+        if (nRemote && nRemote == donorStart[i + 1] - donorStart[i])
+        {
+            allRemoteAcceptors_[rank] += perSample;
         }
     }
 }
@@ -144,7 +149,8 @@ Foam::couplingReport::couplingReport
     pairs_(nRanks, Zero),
     remote_(nRanks, Zero),
     sampled_(nRanks, Zero),
-    remoteAcceptors_(nRanks, Zero)
+    remoteAcceptors_(nRanks, Zero),
+    allRemoteAcceptors_(nRanks, Zero)
 {
     if (decomp.size() != mesh.nCells() || min(decomp) < 0)
     {
@@ -175,6 +181,13 @@ Foam::scalar Foam::couplingReport::remoteAcceptorShare() const
 }
 
 
+Foam::scalar Foam::couplingReport::allRemoteAcceptorShare() const
+{
+    const scalar all = sum(sampled_);
+    return all > 0 ? sum(allRemoteAcceptors_)/all : 0;
+}
+
+
 Foam::scalar Foam::couplingReport::remotePairShare() const
 {
     const scalar allPairs = sum(pairs_);
@@ -187,11 +200,11 @@ void Foam::couplingReport::write(Ostream& os, const word& prefix) const
     const List<const scalarList*> columns
     ({
         &cells_, &weight_, &work_, &procFaces_, &acceptors_, &pairs_,
-        &remote_, &sampled_, &remoteAcceptors_
+        &remote_, &sampled_, &remoteAcceptors_, &allRemoteAcceptors_
     });
     os  << prefix << ": rank cells weight oversetWork processorFaces"
         << " acceptors pairs remotePairs sampledAcceptors remoteAcceptors"
-        << nl;
+        << " allRemoteAcceptors" << nl;
     forAll(cells_, rank)
     {
         os  << prefix << ": " << rank;
@@ -209,7 +222,8 @@ void Foam::couplingReport::write(Ostream& os, const word& prefix) const
     os  << nl << prefix << ": imbalance cells " << imbalance(cells_)
         << " weight " << imbalance(weight_) << " oversetWork "
         << imbalance(work_) << " remotePairShare " << remotePairShare()
-        << " remoteAcceptorShare " << remoteAcceptorShare() << nl;
+        << " remoteAcceptorShare " << remoteAcceptorShare()
+        << " allRemoteAcceptorShare " << allRemoteAcceptorShare() << nl;
 }
 
 

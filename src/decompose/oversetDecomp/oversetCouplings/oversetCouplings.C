@@ -246,6 +246,53 @@ void Foam::oversetCouplings::addPose(const fvMesh& mesh)
 }
 
 
+void Foam::oversetCouplings::keepOnly(const label sample)
+{
+    if (sample < 0 || sample >= nSamples())
+    {
+        FatalIOErrorInFunction(objectPath())
+            << "pose " << sample << ": one of the " << nSamples()
+            << " poses kept whole, 0 to " << nSamples() - 1 << ", is allowed"
+            << " (kept pose k is pose k*" << sampleEvery_ << " of the "
+            << nPoses_ << " collected)" << exit(FatalIOError);
+    }
+    acceptorPoses_ = Zero;
+    donorPoses_ = Zero;
+    holePoses_ = Zero;
+    pairPoses_.clear();
+    DynamicList<label> acceptors;
+    DynamicList<label> donorStart(1, Zero);
+    DynamicList<label> donors;
+    for
+    (
+        label i = samplePoseStart_[sample];
+        i < samplePoseStart_[sample + 1];
+        ++i
+    )
+    {
+        const label celli = sampleAcceptors_[i];
+        ++acceptorPoses_[celli];
+        acceptors.append(celli);
+        for (label j = sampleDonorStart_[i]; j < sampleDonorStart_[i + 1]; ++j)
+        {
+            const label donori = sampleDonors_[j];
+            ++donorPoses_[donori];
+            ++pairPoses_(labelPair(celli, donori), 0);
+            donors.append(donori);
+        }
+        donorStart.append(donors.size());
+    }
+    sortPairs();
+    pairPoses_.clear();
+    nPoses_ = 1;
+    sampleEvery_ = 1;
+    samplePoseStart_ = labelList({0, acceptors.size()});
+    sampleAcceptors_.transfer(acceptors);
+    sampleDonorStart_.transfer(donorStart);
+    sampleDonors_.transfer(donors);
+}
+
+
 void Foam::oversetCouplings::writeCouplings()
 {
     sortPairs();

@@ -54,7 +54,7 @@ namespace Foam
 void Foam::oversetGraphDecomp::checkKeys() const
 {
     wordList allowed(graphPartitioner::keys);
-    allowed.append(wordList({"couplings", "couplingWeight"}));
+    allowed.append(wordList({"couplings", "couplingWeight", "pose"}));
     dictionaryKeys(allowed).named(typeName + "Coeffs").check(coeffs_);
 }
 
@@ -107,6 +107,7 @@ Foam::oversetGraphDecomp::oversetGraphDecomp
             coeffs_, "couplingWeight", 1, scalarMinMax(0, 1000)
         )
     ),
+    pose_(coeffs_.getOrDefault<label>("pose", -1)),
     partitioner_(coeffs_)
 {
     checkKeys();
@@ -126,18 +127,27 @@ Foam::labelList Foam::oversetGraphDecomp::decompose
     {
         notSupported("a decomposed mesh in parallel");
     }
-    const oversetCouplings couplings
-    (
-        mesh.time(), couplingsFile_, mesh.nCells()
-    );
+    oversetCouplings couplings(mesh.time(), couplingsFile_, mesh.nCells());
+    if (pose_ != -1)
+    {
+        couplings.keepOnly(pose_);
+    }
     const couplingGraph graph
     (
         mesh, couplings, couplingWeight_, cellWeights
     );
     const labelList decomp(partitioner_.partition(graph, nDomains_));
     Info<< typeName << ": " << nDomains_ << " ranks, " << mesh.nCells()
-        << " cells, " << partitioner_.libraryName() << " underneath, "
-        << couplings.nPoses() << " poses of " << couplingsFile_ << nl;
+        << " cells, " << partitioner_.libraryName() << " underneath, ";
+    if (pose_ == -1)
+    {
+        Info<< couplings.nPoses() << " poses";
+    }
+    else
+    {
+        Info<< "kept pose " << pose_;
+    }
+    Info<< " of " << couplingsFile_ << nl;
     couplingReport(mesh, graph, couplings, decomp, nDomains_)
         .write(Info, typeName);
     Info<< endl;
