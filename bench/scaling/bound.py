@@ -14,8 +14,10 @@ oversetGraph made for pose K alone (what a decomposition moved with the
 wing at every step would give, as far as METIS finds it).  Per level and
 number of ranks, means over the poses: acceptors with a donor on another
 rank, with every donor on another rank (the stock log's "remote"),
-donor-acceptor pairs with the donor remote, processor faces against
-scotch's (the structure stage's), cells and overset work max/mean.  Reads
+donor-acceptor pairs with the donor remote, processor faces and the
+values the busiest rank receives per linear-solver sweep (processor faces
+plus remote donor cells) against scotch's (the structure stage's), cells
+and overset work max/mean.  Reads
 DIR/<level>/bound/{cycle,pose}<K>-np<N>.report and
 DIR/<level>/structure/scotch-np<N>.report.
 """
@@ -41,12 +43,15 @@ def counts(fname):
     sampled = max(total["sampledAcceptors"], 1.0)
     work = rankTables.column(t, "oversetWork")
     cells = rankTables.column(t, "cells")
+    sweep = rankTables.column(t, "processorFaces") \
+        + rankTables.column(t, "remoteDonors")
     return {"remote": total["remoteAcceptors"]/sampled,
             "allRemote": total["allRemoteAcceptors"]/sampled,
             "pairs": total["remotePairs"]/max(total["pairs"], 1.0),
             "faces": total["processorFaces"]/2,
             "cells": cells.max()/cells.mean(),
-            "work": work.max()/max(work.mean(), 1e-300)}
+            "work": work.max()/max(work.mean(), 1e-300),
+            "sweep": sweep.max()}
 
 
 def mean_counts(files):
@@ -61,19 +66,20 @@ def level_rows(dir_, level, nps, poses):
     for n in nps:
         scotch = os.path.join(dir_, level, "structure",
                               "scotch-np%d.report" % n)
-        faces = counts(scotch)["faces"] if os.path.exists(scotch) else None
+        ref = counts(scotch) if os.path.exists(scotch) else None
         for kind in ("cycle", "pose"):
             c = mean_counts([os.path.join(dir_, level, "bound",
                                           "%s%d-np%d.report" % (kind, k, n))
                              for k in poses])
-            ratio = "%.2f" % (c["faces"]/faces) if faces else "-"
+            ratio = ["%.2f" % (c[k]/ref[k]) if ref else "-"
+                     for k in ("faces", "sweep")]
             name = "cycle (a run's)" if kind == "cycle" \
                 else "each pose its own"
             rows.append("| %d | %s | %.1f %% | %.1f %% | %.1f %% | %d | %s "
-                        "| %.3f | %.2f |"
+                        "| %.0f | %s | %.3f | %.2f |"
                         % (n, name, 100*c["remote"], 100*c["allRemote"],
-                           100*c["pairs"], c["faces"], ratio, c["cells"],
-                           c["work"]))
+                           100*c["pairs"], c["faces"], ratio[0], c["sweep"],
+                           ratio[1], c["cells"], c["work"]))
     return rows
 
 
@@ -95,15 +101,19 @@ def main(argv):
         "every step would give, as far as METIS finds it), both counted at "
         "the pose (`oversetCouplingsReport -pose K`); means over the poses. "
         "Remote acceptors: with a donor on another rank; all remote: every "
-        "donor on another rank (the stock log's `remote`). Processor faces "
-        "against the structure stage's scotch. Overset work at one pose: "
-        "acceptors and donors (no holes)." % ", ".join(map(str, poses)), ""]
+        "donor on another rank (the stock log's `remote`). Sweep values "
+        "max: what the busiest rank receives per linear-solver sweep, "
+        "processor faces plus the donor cells on other ranks (each once; "
+        "v1912 puts them in the matrix as remote-stencil interfaces). "
+        "Processor faces and sweep values against the structure stage's "
+        "scotch (over the cycle). Overset work at one pose: acceptors and "
+        "donors (no holes)." % ", ".join(map(str, poses)), ""]
     for level in args.levels.split():
         lines += ["## SW %s" % level, "",
                   "| ranks | decomposition | remote acceptors | all remote "
-                  "| remote pairs | processor faces | vs scotch | cells "
-                  "max/mean | overset work max/mean |",
-                  "|---:|---|---:|---:|---:|---:|---:|---:|---:|"]
+                  "| remote pairs | processor faces | vs scotch | sweep values "
+                  "max | vs scotch | cells max/mean | overset work max/mean |",
+                  "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
         lines += level_rows(args.dir, level, nps, poses) + [""]
     with open(args.o, "w") as f:
         f.write("\n".join(lines))

@@ -6,7 +6,8 @@
 known (bench/scaling/Alltest runs it): flapfoam.rankTables (a couplingReport
 and an oversetRankReport table with their extra lines, cellDist to
 cellDecomposition, neighbour ranks of a 2x2 mesh) and flapfoam.scalingModel
-(an exact traffic fit, the step of a 2-rank decomposition by hand).  PASS
+(an exact traffic fit, the step of a 2-rank decomposition by hand, the
+values the busiest rank receives per sweep).  PASS
 and FAIL lines; exit status 1 if one fails.
 
     bench/scaling/checkModel.py DIR      (DIR: a scratch folder)
@@ -98,6 +99,15 @@ def check_model():
     check("step of 2 ranks", abs(step["overset"] - overset) < 1e-15
           and abs(step["pimple"] - pimple) < 1e-15
           and abs(step["total"] - 0.01 - overset - pimple) < 1e-15, str(step))
+    # the busiest rank per sweep: faces + remote donor cells (50 + 30 on
+    # rank 1); a report without remoteDonors: NaN
+    without = scalingModel.Decomposition(table, [1, 1]).sweep_values_max()
+    table["columns"].append("remoteDonors")
+    for row, donors in zip(table["rows"], (8, 30)):
+        row["remoteDonors"] = donors
+    sweep = scalingModel.Decomposition(table, [1, 1]).sweep_values_max()
+    check("sweep values max", sweep == 80 and np.isnan(without),
+          "%s, without the column %s" % (sweep, without))
 
 
 def main():

@@ -23,20 +23,28 @@ def structure_table(level, structure):
             level, next(iter(structure.values())).cells.sum()), "",
         "| method | ranks | cells max/mean | processor faces | vs scotch "
         "| neighbours max | overset work max/mean | acceptors | remote pair "
-        "share | remote acceptor share |",
-        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+        "share | remote acceptor share | sweep values max | vs scotch |",
+        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for method, p in _keys(structure):
         d = structure[(method, p)]
         scotch = structure.get(("scotch", p))
         ratio = "%.2f" % (d.faces.sum()/scotch.faces.sum()) \
             if scotch is not None else "-"
+        sweep = d.sweep_values_max()
+        sweep_ratio = "%.2f" % (sweep/scotch.sweep_values_max()) \
+            if scotch is not None else "-"
         lines.append("| %s | %d | %.3f | %d | %s | %d | %.2f | %d | %.1f %% "
-                     "| %.1f %% |"
+                     "| %.1f %% | %.0f | %s |"
                      % (method, p, d.cells.max()/d.cells.mean(),
                         d.faces.sum(), ratio, d.neighbours.max(),
                         d.work.max()/d.work.mean(), d.acceptors.sum(),
                         100*d.remote_pair_share(),
-                        100*d.remote_acceptor_share()))
+                        100*d.remote_acceptor_share(), sweep, sweep_ratio))
+    lines += ["", "Sweep values max: what the busiest rank receives per "
+              "linear-solver sweep, processor faces plus the donor cells on "
+              "other ranks (each once: v1912 puts them in the matrix as "
+              "remote-stencil interfaces); not in the model, whose halo "
+              "counts the processor faces."]
     return lines
 
 

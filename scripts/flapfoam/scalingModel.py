@@ -119,6 +119,9 @@ class Decomposition:
         self.pairs = col["remotePairs"]
         self.acceptors = col["acceptors"]
         self.allPairs = col["pairs"]
+        # donor cells on other ranks, each once (reports since it was
+        # counted; None before)
+        self.remoteDonors = col.get("remoteDonors")
         self.neighbours = np.asarray(neighbours, float)
         self.info = table["info"]
 
@@ -126,6 +129,14 @@ class Decomposition:
         """Donor-acceptor pairs of the cycle with the donor on another
         rank, over all pairs."""
         return self.pairs.sum()/self.allPairs.sum()
+
+    def sweep_values_max(self):
+        """The values the busiest rank receives per linear-solver sweep:
+        processor faces plus remote donor cells (v1912's remote-stencil
+        interfaces); NaN for a report without remoteDonors."""
+        if self.remoteDonors is None:
+            return float("nan")
+        return float((self.faces + self.remoteDonors).max())
 
     def remote_acceptor_share(self):
         """Acceptors with a donor on another rank over all acceptors (the

@@ -22,6 +22,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "couplingReport.H"
+#include "HashSet.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -109,22 +110,34 @@ void Foam::couplingReport::countSamples
     const labelList& donorStart = couplings.sampleDonorStart();
     const labelList& donors = couplings.sampleDonors();
     const scalar perSample = 1.0/max(1, couplings.nSamples());
-    for (label i = 0; i < poseStart.last(); ++i)
+    for (label sample = 0; sample < couplings.nSamples(); ++sample)
     {
-        const label rank = decomp[acceptors[i]];
-        sampled_[rank] += perSample;
-        label nRemote = 0;
-        for (label j = donorStart[i]; j < donorStart[i + 1]; ++j)
+        // (rank, donor) of the pose: each remote donor cell counted once
+        HashSet<labelPair, Hash<labelPair>> received;
+        for (label i = poseStart[sample]; i < poseStart[sample + 1]; ++i)
         {
-            nRemote += (decomp[donors[j]] != rank);
-        }
-        if (nRemote)
-        {
-            remoteAcceptors_[rank] += perSample;
-        }
-        if (nRemote && nRemote == donorStart[i + 1] - donorStart[i])
-        {
-            allRemoteAcceptors_[rank] += perSample;
+            const label rank = decomp[acceptors[i]];
+            sampled_[rank] += perSample;
+            label nRemote = 0;
+            for (label j = donorStart[i]; j < donorStart[i + 1]; ++j)
+            {
+                if (decomp[donors[j]] != rank)
+                {
+                    ++nRemote;
+                    if (received.insert(labelPair(rank, donors[j])))
+                    {
+                        remoteDonors_[rank] += perSample;
+                    }
+                }
+            }
+            if (nRemote)
+            {
+                remoteAcceptors_[rank] += perSample;
+            }
+            if (nRemote && nRemote == donorStart[i + 1] - donorStart[i])
+            {
+                allRemoteAcceptors_[rank] += perSample;
+            }
         }
     }
 }
@@ -150,7 +163,8 @@ Foam::couplingReport::couplingReport
     remote_(nRanks, Zero),
     sampled_(nRanks, Zero),
     remoteAcceptors_(nRanks, Zero),
-    allRemoteAcceptors_(nRanks, Zero)
+    allRemoteAcceptors_(nRanks, Zero),
+    remoteDonors_(nRanks, Zero)
 {
     if (decomp.size() != mesh.nCells() || min(decomp) < 0)
     {
@@ -200,11 +214,12 @@ void Foam::couplingReport::write(Ostream& os, const word& prefix) const
     const List<const scalarList*> columns
     ({
         &cells_, &weight_, &work_, &procFaces_, &acceptors_, &pairs_,
-        &remote_, &sampled_, &remoteAcceptors_, &allRemoteAcceptors_
+        &remote_, &sampled_, &remoteAcceptors_, &allRemoteAcceptors_,
+        &remoteDonors_
     });
     os  << prefix << ": rank cells weight oversetWork processorFaces"
         << " acceptors pairs remotePairs sampledAcceptors remoteAcceptors"
-        << " allRemoteAcceptors" << nl;
+        << " allRemoteAcceptors remoteDonors" << nl;
     forAll(cells_, rank)
     {
         os  << prefix << ": " << rank;
