@@ -100,14 +100,22 @@ def check_model():
           and abs(step["pimple"] - pimple) < 1e-15
           and abs(step["total"] - 0.01 - overset - pimple) < 1e-15, str(step))
     # the busiest rank per sweep: faces + remote donor cells (50 + 30 on
-    # rank 1); a report without remoteDonors: NaN
+    # rank 1); a report without remoteDonors: NaN.  PIMPLE with the
+    # remote-stencil interfaces (1 rank each): rank 0 1e-3 + 1e-6 (10 (1 +
+    # 1) + 4*2) + 1e-9*2*8 (50 + 8), rank 1 less
     without = scalingModel.Decomposition(table, [1, 1]).sweep_values_max()
-    table["columns"].append("remoteDonors")
+    table["columns"] += ["remoteDonors", "donorRanks"]
     for row, donors in zip(table["rows"], (8, 30)):
-        row["remoteDonors"] = donors
-    sweep = scalingModel.Decomposition(table, [1, 1]).sweep_values_max()
-    check("sweep values max", sweep == 80 and np.isnan(without),
-          "%s, without the column %s" % (sweep, without))
+        row["remoteDonors"], row["donorRanks"] = donors, 1
+    d = scalingModel.Decomposition(table, [1, 1])
+    sweep = d.sweep_values_max()
+    pimple = 1e-3 + 28e-6 + 928e-9
+    step = scalingModel.predict(costs, d)
+    check("sweep values max, PIMPLE with remote donors",
+          sweep == 80 and np.isnan(without)
+          and abs(step["pimple"] - pimple) < 1e-15,
+          "%s, without the column %s; pimple %r" % (sweep, without,
+                                                    step["pimple"]))
 
 
 def main():

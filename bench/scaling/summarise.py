@@ -116,13 +116,17 @@ def read_ping_pong(fname):
 
 def pimple_traffic(traffic, structure):
     """(sMsg, sBytes, sReduce): the flow run minus the motion run (octree,
-    hierarchical, 2 ranks), per step of rank 0."""
+    hierarchical, 2 ranks), per step of rank 0: per interface (neighbour
+    rank and remote-stencil rank), per value (processor face and remote
+    donor cell), reductions."""
     stencil = "octreeInverseDistance"
     flow = traffic[("solver", 2, stencil)]["perStep"][0]
     motion = traffic[("hierarchical", 2, stencil)]["perStep"][0]
     d = structure[("hierarchical", 2)]
-    return ((flow["p2pCalls"] - motion["p2pCalls"])/d.neighbours[0],
-            (flow["p2pBytes"] - motion["p2pBytes"])/(8*d.faces[0]),
+    return ((flow["p2pCalls"] - motion["p2pCalls"])
+            / (d.neighbours[0] + d.donorRanks[0]),
+            (flow["p2pBytes"] - motion["p2pBytes"])
+            / (8*(d.faces[0] + d.remoteDonors[0])),
             flow["collectiveCalls"] - motion["collectiveCalls"])
 
 

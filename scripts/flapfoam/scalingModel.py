@@ -13,19 +13,24 @@ the two parts are synchronised separately; rbd is serial, the same on
 every rank), with, per rank r of P,
 
     overset_r = cFix + cWork W_r + alpha m_r + beta b_r
-    pimple_r  = cCell N_r + alpha sMsg k_r + beta sBytes 8 F_r
+    pimple_r  = cCell N_r + alpha sMsg (k_r + q_r) + beta sBytes 8 (F_r + D_r)
                 + alpha sReduce 2 ceil(log2 P)
 
 - N_r cells, F_r processor faces, k_r neighbour ranks, W_r overset work
   (fringe, donors, hole-cut candidates: couplingReport's oversetWork, a
-  mean over the poses of a cycle);
+  mean over the poses of a cycle); D_r the donor cells on other ranks its
+  acceptors use and q_r the ranks they come from (couplingReport's
+  remoteDonors, donorRanks: v1912's dynamicOversetFvMesh puts them in the
+  matrix as remote-stencil interfaces, exchanged every linear-solver
+  sweep like the processor faces; 0 for a report without them);
 - m_r, b_r: the messages and bytes that the stencil sends per step
   (motion and stencil only), from the traffic fit (TrafficFit: counted at
   some (method, P) on one level, fitted against P - 1 and the rank's
   remote donor-acceptor pairs);
-- sMsg, sBytes, sReduce: halo exchanges per neighbour, sweeps by bytes
-  and reductions of one PIMPLE step (counted: a flow run minus a motion
-  run, 2 ranks);
+- sMsg, sBytes, sReduce: halo exchanges per interface (neighbour rank or
+  remote-stencil rank), sweeps by bytes (per face or remote donor) and
+  reductions of one PIMPLE step (counted: a flow run minus a motion run,
+  2 ranks);
 - cCell, cWork: pimple and overset seconds per cell and per unit of
   overset work of the level's serial run; cFix: overset work that every
   rank repeats whatever its share (e.g. search-box voxels, the same on
@@ -119,9 +124,12 @@ class Decomposition:
         self.pairs = col["remotePairs"]
         self.acceptors = col["acceptors"]
         self.allPairs = col["pairs"]
-        # donor cells on other ranks, each once (reports since it was
-        # counted; None before)
-        self.remoteDonors = col.get("remoteDonors")
+        # donor cells on other ranks, each once, and the ranks they come
+        # from (0 for a report without them)
+        self.sweepCounted = "remoteDonors" in col
+        none = np.zeros(self.ranks)
+        self.remoteDonors = col.get("remoteDonors", none)
+        self.donorRanks = col.get("donorRanks", none)
         self.neighbours = np.asarray(neighbours, float)
         self.info = table["info"]
 
@@ -134,9 +142,14 @@ class Decomposition:
         """The values the busiest rank receives per linear-solver sweep:
         processor faces plus remote donor cells (v1912's remote-stencil
         interfaces); NaN for a report without remoteDonors."""
-        if self.remoteDonors is None:
+        if not self.sweepCounted:
             return float("nan")
         return float((self.faces + self.remoteDonors).max())
+
+    def all_remote_acceptor_share(self):
+        """Acceptors with every donor on another rank (the stock log's
+        "remote") over all acceptors; NaN for a report without them."""
+        return float(self.info.get("allRemoteAcceptorShare", float("nan")))
 
     def remote_acceptor_share(self):
         """Acceptors with a donor on another rank over all acceptors (the
@@ -160,8 +173,9 @@ def predict(costs, d):
     comm = stencil_comm(costs, d)
     overset = costs.cFix + costs.cWork*d.work + comm
     reduce = 2*math.ceil(math.log2(d.ranks)) if d.ranks > 1 else 0
-    halo = costs.alpha*(costs.sMsg*d.neighbours + costs.sReduce*reduce) \
-        + costs.beta*costs.sBytes*8*d.faces
+    halo = costs.alpha*(costs.sMsg*(d.neighbours + d.donorRanks)
+                        + costs.sReduce*reduce) \
+        + costs.beta*costs.sBytes*8*(d.faces + d.remoteDonors)
     pimple = costs.cCell*d.cells + halo
     o, p = int(np.argmax(overset)), int(np.argmax(pimple))
     step = {"rbd": costs.rbd, "overset": float(overset[o]),

@@ -112,8 +112,10 @@ void Foam::couplingReport::countSamples
     const scalar perSample = 1.0/max(1, couplings.nSamples());
     for (label sample = 0; sample < couplings.nSamples(); ++sample)
     {
-        // (rank, donor) of the pose: each remote donor cell counted once
+        // (rank, donor cell) and (rank, donor's rank) of the pose: each
+        // remote donor cell and each rank it comes from counted once
         HashSet<labelPair, Hash<labelPair>> received;
+        HashSet<labelPair, Hash<labelPair>> fromRanks;
         for (label i = poseStart[sample]; i < poseStart[sample + 1]; ++i)
         {
             const label rank = decomp[acceptors[i]];
@@ -127,6 +129,10 @@ void Foam::couplingReport::countSamples
                     if (received.insert(labelPair(rank, donors[j])))
                     {
                         remoteDonors_[rank] += perSample;
+                    }
+                    if (fromRanks.insert(labelPair(rank, decomp[donors[j]])))
+                    {
+                        donorRanks_[rank] += perSample;
                     }
                 }
             }
@@ -164,7 +170,8 @@ Foam::couplingReport::couplingReport
     sampled_(nRanks, Zero),
     remoteAcceptors_(nRanks, Zero),
     allRemoteAcceptors_(nRanks, Zero),
-    remoteDonors_(nRanks, Zero)
+    remoteDonors_(nRanks, Zero),
+    donorRanks_(nRanks, Zero)
 {
     if (decomp.size() != mesh.nCells() || min(decomp) < 0)
     {
@@ -215,11 +222,11 @@ void Foam::couplingReport::write(Ostream& os, const word& prefix) const
     ({
         &cells_, &weight_, &work_, &procFaces_, &acceptors_, &pairs_,
         &remote_, &sampled_, &remoteAcceptors_, &allRemoteAcceptors_,
-        &remoteDonors_
+        &remoteDonors_, &donorRanks_
     });
     os  << prefix << ": rank cells weight oversetWork processorFaces"
         << " acceptors pairs remotePairs sampledAcceptors remoteAcceptors"
-        << " allRemoteAcceptors remoteDonors" << nl;
+        << " allRemoteAcceptors remoteDonors donorRanks" << nl;
     forAll(cells_, rank)
     {
         os  << prefix << ": " << rank;
