@@ -92,13 +92,24 @@ def check_model():
              "info": {}}
     step = scalingModel.predict(costs, scalingModel.Decomposition(table,
                                                                   [1, 1]))
-    # rank 1 overset: 3e-3 + 1e-6 (2 + 1) + 1e-9 (5 + 7); rank 0 pimple:
-    # 1e-3 + 1e-6 (10 + 4*2) + 1e-9*2*8*50
-    overset = 3e-3 + 3e-6 + 12e-9
+    # overset: rank 1's work 1e-5*300 + rank 0's traffic 1e-6 (2 + 1) +
+    # 1e-9 (5 + 7 + 3*10); rank 0 pimple: 1e-3 + 1e-6 (10 + 4*2) +
+    # 1e-9*2*8*50
+    overset = 3e-3 + 3e-6 + 42e-9
     pimple = 1e-3 + 18e-6 + 800e-9
     check("step of 2 ranks", abs(step["overset"] - overset) < 1e-15
           and abs(step["pimple"] - pimple) < 1e-15
           and abs(step["total"] - 0.01 - overset - pimple) < 1e-15, str(step))
+    # the work's imbalance at a pose 1.8 (of the mean 200): 360 at a step;
+    # 1.2 (240) is below the cycle's largest mean, 300
+    peaks = []
+    for at_pose in (1.8, 1.2):
+        table["info"]["oversetWorkAtPose"] = at_pose
+        peaks.append(scalingModel.predict(
+            costs, scalingModel.Decomposition(table, [1, 1]))["overset"])
+    del table["info"]["oversetWorkAtPose"]
+    check("overset at a pose", abs(peaks[0] - overset - 0.6e-3) < 1e-15
+          and abs(peaks[1] - overset) < 1e-15, str(peaks))
     # the busiest rank per sweep: faces + remote donor cells (50 + 30 on
     # rank 1); a report without remoteDonors: NaN.  PIMPLE with the
     # remote-stencil interfaces (1 rank each): rank 0 1e-3 + 1e-6 (10 (1 +

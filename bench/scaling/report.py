@@ -22,9 +22,10 @@ def structure_table(level, structure):
         "means over the cycle's poses)" % (
             level, next(iter(structure.values())).cells.sum()), "",
         "| method | ranks | cells max/mean | processor faces | vs scotch "
-        "| neighbours max | overset work max/mean | acceptors | remote pair "
-        "share | remote acceptor share | sweep values max | vs scotch |",
-        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+        "| neighbours max | overset work max/mean | at a pose | acceptors "
+        "| remote pair share | remote acceptor share | sweep values max "
+        "| vs scotch |",
+        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for method, p in _keys(structure):
         d = structure[(method, p)]
         scotch = structure.get(("scotch", p))
@@ -33,18 +34,21 @@ def structure_table(level, structure):
         sweep = d.sweep_values_max()
         sweep_ratio = "%.2f" % (sweep/scotch.sweep_values_max()) \
             if scotch is not None else "-"
-        lines.append("| %s | %d | %.3f | %d | %s | %d | %.2f | %d | %.1f %% "
-                     "| %.1f %% | %.0f | %s |"
+        lines.append("| %s | %d | %.3f | %d | %s | %d | %.2f | %.2f | %d "
+                     "| %.1f %% | %.1f %% | %.0f | %s |"
                      % (method, p, d.cells.max()/d.cells.mean(),
                         d.faces.sum(), ratio, d.neighbours.max(),
-                        d.work.max()/d.work.mean(), d.acceptors.sum(),
+                        d.work.max()/d.work.mean(),
+                        d.work_peak()/d.work.mean(), d.acceptors.sum(),
                         100*d.remote_pair_share(),
                         100*d.remote_acceptor_share(), sweep, sweep_ratio))
-    lines += ["", "Sweep values max: what the busiest rank receives per "
-              "linear-solver sweep, processor faces plus the donor cells on "
-              "other ranks (each once: v1912 puts them in the matrix as "
-              "remote-stencil interfaces); not in the model, whose halo "
-              "counts the processor faces."]
+    lines += ["", "Overset work max/mean: of the means over the cycle; at "
+              "a pose: the busiest rank's at a step (the imbalance at a kept "
+              "pose, a mean over them: the model's W_peak). Sweep values "
+              "max: what the busiest rank receives per linear-solver sweep, "
+              "processor faces plus the donor cells on other ranks (each "
+              "once: v1912 puts them in the matrix as remote-stencil "
+              "interfaces, in the model's halo)."]
     return lines
 
 

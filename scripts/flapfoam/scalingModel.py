@@ -6,19 +6,24 @@ A model of one time step of the drone cases per rank, from what a
 decomposition gives each rank (counted: rankTables, mpiCounts) and costs
 measured on one machine (bench/scaling).  A model, not a measurement:
 
-    step = rbd + max_r overset_r + max_r pimple_r
+    step = rbd + overset + max_r pimple_r
 
 (timedOversetFvMesh waits for the slowest rank after the mesh update, so
 the two parts are synchronised separately; rbd is serial, the same on
 every rank), with, per rank r of P,
 
-    overset_r = cFix + cWork W_r + alpha m_r + beta b_r
+    overset   = cFix + cWork W_peak + max_r (alpha m_r + beta b_r)
     pimple_r  = cCell N_r + alpha sMsg (k_r + q_r) + beta sBytes 8 (F_r + D_r)
                 + alpha sReduce 2 ceil(log2 P)
 
 - N_r cells, F_r processor faces, k_r neighbour ranks, W_r overset work
   (fringe, donors, hole-cut candidates: couplingReport's oversetWork, a
-  mean over the poses of a cycle); D_r the donor cells on other ranks its
+  mean over the poses of a cycle); W_peak the busiest rank's at a step:
+  max(max_r W_r, oversetWorkAtPose mean_r W_r), with couplingReport's
+  oversetWorkAtPose the imbalance of the work at a pose (acceptors and
+  donors, a mean over the kept poses; the busiest rank changes with the
+  pose, so this is above the imbalance of the cycle's means; max_r W_r
+  for a report without it); D_r the donor cells on other ranks its
   acceptors use and q_r the ranks they come from (couplingReport's
   remoteDonors, donorRanks: v1912's dynamicOversetFvMesh puts them in the
   matrix as remote-stencil interfaces, exchanged every linear-solver
@@ -133,6 +138,14 @@ class Decomposition:
         self.neighbours = np.asarray(neighbours, float)
         self.info = table["info"]
 
+    def work_peak(self):
+        """The busiest rank's overset work at a step: the work's
+        imbalance at a pose (oversetWorkAtPose) times its mean, at least
+        the largest of the cycle's means (that alone for a report
+        without it)."""
+        at_pose = float(self.info.get("oversetWorkAtPose", 0.0))
+        return max(float(self.work.max()), at_pose*float(self.work.mean()))
+
     def remote_pair_share(self):
         """Donor-acceptor pairs of the cycle with the donor on another
         rank, over all pairs."""
@@ -169,18 +182,19 @@ def stencil_comm(costs, d):
 
 def predict(costs, d):
     """The model's step of decomposition d: dict rbd, overset, pimple,
-    total (seconds) and oversetComm, pimpleComm (of the slowest rank)."""
+    total (seconds), oversetComm (the most of any rank) and pimpleComm
+    (of the slowest rank)."""
     comm = stencil_comm(costs, d)
-    overset = costs.cFix + costs.cWork*d.work + comm
     reduce = 2*math.ceil(math.log2(d.ranks)) if d.ranks > 1 else 0
     halo = costs.alpha*(costs.sMsg*(d.neighbours + d.donorRanks)
                         + costs.sReduce*reduce) \
         + costs.beta*costs.sBytes*8*(d.faces + d.remoteDonors)
     pimple = costs.cCell*d.cells + halo
-    o, p = int(np.argmax(overset)), int(np.argmax(pimple))
-    step = {"rbd": costs.rbd, "overset": float(overset[o]),
-            "pimple": float(pimple[p]), "oversetComm": float(comm[o]),
-            "pimpleComm": float(halo[p])}
+    p = int(np.argmax(pimple))
+    step = {"rbd": costs.rbd, "oversetComm": float(comm.max()),
+            "pimple": float(pimple[p]), "pimpleComm": float(halo[p])}
+    step["overset"] = costs.cFix + costs.cWork*d.work_peak() \
+        + step["oversetComm"]
     step["total"] = step["rbd"] + step["overset"] + step["pimple"]
     return step
 

@@ -112,6 +112,8 @@ void Foam::couplingReport::countSamples
     const scalar perSample = 1.0/max(1, couplings.nSamples());
     for (label sample = 0; sample < couplings.nSamples(); ++sample)
     {
+        // the pose's overset work per rank: acceptors and donors
+        scalarList poseWork(cells_.size(), Zero);
         // (rank, donor cell) and (rank, donor's rank) of the pose: each
         // remote donor cell and each rank it comes from counted once
         HashSet<labelPair, Hash<labelPair>> received;
@@ -120,9 +122,11 @@ void Foam::couplingReport::countSamples
         {
             const label rank = decomp[acceptors[i]];
             sampled_[rank] += perSample;
+            poseWork[rank] += 1;
             label nRemote = 0;
             for (label j = donorStart[i]; j < donorStart[i + 1]; ++j)
             {
+                poseWork[decomp[donors[j]]] += 1;
                 if (decomp[donors[j]] != rank)
                 {
                     ++nRemote;
@@ -145,6 +149,7 @@ void Foam::couplingReport::countSamples
                 allRemoteAcceptors_[rank] += perSample;
             }
         }
+        workAtPose_ += perSample*imbalance(poseWork);
     }
 }
 
@@ -171,7 +176,8 @@ Foam::couplingReport::couplingReport
     remoteAcceptors_(nRanks, Zero),
     allRemoteAcceptors_(nRanks, Zero),
     remoteDonors_(nRanks, Zero),
-    donorRanks_(nRanks, Zero)
+    donorRanks_(nRanks, Zero),
+    workAtPose_(couplings.nSamples() ? 0 : 1)
 {
     if (decomp.size() != mesh.nCells() || min(decomp) < 0)
     {
@@ -245,7 +251,8 @@ void Foam::couplingReport::write(Ostream& os, const word& prefix) const
         << " weight " << imbalance(weight_) << " oversetWork "
         << imbalance(work_) << " remotePairShare " << remotePairShare()
         << " remoteAcceptorShare " << remoteAcceptorShare()
-        << " allRemoteAcceptorShare " << allRemoteAcceptorShare() << nl;
+        << " allRemoteAcceptorShare " << allRemoteAcceptorShare()
+        << " oversetWorkAtPose " << workAtPose_ << nl;
 }
 
 
