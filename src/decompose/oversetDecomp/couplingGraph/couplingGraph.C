@@ -109,6 +109,29 @@ void Foam::couplingGraph::setRows
 }
 
 
+void Foam::couplingGraph::setPoseWork(const oversetCouplings& couplings)
+{
+    const labelList& poseStart = couplings.samplePoseStart();
+    const labelList& acceptors = couplings.sampleAcceptors();
+    const labelList& donorStart = couplings.sampleDonorStart();
+    const labelList& donors = couplings.sampleDonors();
+    poseWork_.setSize(couplings.nSamples());
+    forAll(poseWork_, sample)
+    {
+        labelList& work = poseWork_[sample];
+        work.setSize(nCells(), Zero);
+        for (label i = poseStart[sample]; i < poseStart[sample + 1]; ++i)
+        {
+            ++work[acceptors[i]];
+            for (label j = donorStart[i]; j < donorStart[i + 1]; ++j)
+            {
+                ++work[donors[j]];
+            }
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::couplingGraph::couplingGraph
@@ -129,6 +152,7 @@ Foam::couplingGraph::couplingGraph
         oversetWork_[celli] = couplings.acceptorPoses()[celli]
           + couplings.donorPoses()[celli] + couplings.holePoses()[celli];
     }
+    setPoseWork(couplings);
 
     CompactListList<label> cellCells;
     decompositionMethod::calcCellCells

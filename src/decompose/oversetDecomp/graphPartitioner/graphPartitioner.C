@@ -35,7 +35,8 @@ Foam::graphPartitioner::libraryNames
 
 const Foam::wordList Foam::graphPartitioner::keys
 ({
-    "partitioner", "imbalance", "oversetImbalance", "oversetWork"
+    "partitioner", "imbalance", "oversetImbalance", "oversetWork",
+    "poseGroups"
 });
 
 
@@ -61,8 +62,31 @@ Foam::graphPartitioner::graphPartitioner(const dictionary& coeffs)
     oversetWork_
     (
         readInRange(coeffs, "oversetWork", 1, scalarMinMax(0, 1000))
+    ),
+    poseGroups_
+    (
+        label(readInRange(coeffs, "poseGroups", -1, scalarMinMax(-1, 1000)))
     )
-{}
+{
+    if (poseGroups_ != coeffs.getOrDefault<scalar>("poseGroups", -1))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "poseGroups " << coeffs.get<scalar>("poseGroups")
+            << ": an integer in [-1, 1000] is allowed" << exit(FatalIOError);
+    }
+    if
+    (
+        coeffs.found("poseGroups") && poseGroups_
+     && library_ != library::metis
+    )
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "poseGroups " << poseGroups_ << " with partitioner "
+            << libraryNames[library_] << ": poseGroups is allowed with"
+            << " partitioner metis only (scotch balances one weight)"
+            << exit(FatalIOError);
+    }
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

@@ -21,7 +21,8 @@ License
 
 Description
     graphPartitioner::metis: METIS_PartGraphKway, two constraints per
-    vertex (cell weight, overset work), weighted edges.
+    vertex (cell weight, overset work) and one per group of kept poses
+    (poseGroups), weighted edges.
 
 \*---------------------------------------------------------------------------*/
 
@@ -37,6 +38,55 @@ static_assert
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+Foam::labelList Foam::graphPartitioner::metisWeights
+(
+    const couplingGraph& graph,
+    label& nConstraints
+) const
+{
+    // the constraints' columns: cells, the cycle's overset work, and the
+    // work of each group of kept poses; columns without work left out
+    const label nSamples = graph.poseWork().size();
+    const label nGroups =
+        poseGroups_ < 0 ? nSamples : min(poseGroups_, nSamples);
+    List<labelList> columns({graph.cellWeight(), graph.oversetWork()});
+    for (label group = 0; group < nGroups; ++group)
+    {
+        labelList work(graph.nCells(), Zero);
+        forAll(graph.poseWork(), sample)
+        {
+            if (sample*nGroups/nSamples != group)
+            {
+                continue;
+            }
+            forAll(work, i)
+            {
+                work[i] += graph.poseWork()[sample][i];
+            }
+        }
+        columns.append(work);
+    }
+    DynamicList<const labelList*> used;
+    for (const labelList& column : columns)
+    {
+        if (used.empty() || sum(column) > 0)
+        {
+            used.append(&column);
+        }
+    }
+    nConstraints = used.size();
+    labelList vwgt(nConstraints*graph.nCells());
+    forAll(used, c)
+    {
+        forAll(*used[c], i)
+        {
+            vwgt[nConstraints*i + c] = (*used[c])[i];
+        }
+    }
+    return vwgt;
+}
+
+
 Foam::labelList Foam::graphPartitioner::metis
 (
     const couplingGraph& graph,
@@ -44,23 +94,10 @@ Foam::labelList Foam::graphPartitioner::metis
 ) const
 {
     idx_t nVertices = graph.nCells();
-    const bool withOverset = sum(graph.oversetWork()) > 0;
-    idx_t nConstraints = withOverset ? 2 : 1;
-
-    std::vector<idx_t> vwgt(nConstraints*nVertices);
-    for (idx_t i = 0; i < nVertices; ++i)
-    {
-        vwgt[nConstraints*i] = graph.cellWeight()[i];
-        if (withOverset)
-        {
-            vwgt[nConstraints*i + 1] = graph.oversetWork()[i];
-        }
-    }
-    std::vector<real_t> ubvec{real_t(1 + imbalance_)};
-    if (withOverset)
-    {
-        ubvec.push_back(real_t(1 + oversetImbalance_));
-    }
+    idx_t nConstraints = 1;
+    labelList vwgt(metisWeights(graph, nConstraints));
+    std::vector<real_t> ubvec(nConstraints, real_t(1 + oversetImbalance_));
+    ubvec[0] = real_t(1 + imbalance_);
     idx_t options[METIS_NOPTIONS];
     METIS_SetDefaultOptions(options);
     options[METIS_OPTION_NUMBERING] = 0;
