@@ -112,8 +112,6 @@ void Foam::couplingReport::countSamples
     const scalar perSample = 1.0/max(1, couplings.nSamples());
     for (label sample = 0; sample < couplings.nSamples(); ++sample)
     {
-        // the pose's overset work per rank: acceptors and donors
-        scalarList poseWork(cells_.size(), Zero);
         // (rank, donor cell) and (rank, donor's rank) of the pose: each
         // remote donor cell and each rank it comes from counted once
         HashSet<labelPair, Hash<labelPair>> received;
@@ -122,11 +120,9 @@ void Foam::couplingReport::countSamples
         {
             const label rank = decomp[acceptors[i]];
             sampled_[rank] += perSample;
-            poseWork[rank] += 1;
             label nRemote = 0;
             for (label j = donorStart[i]; j < donorStart[i + 1]; ++j)
             {
-                poseWork[decomp[donors[j]]] += 1;
                 if (decomp[donors[j]] != rank)
                 {
                     ++nRemote;
@@ -149,7 +145,25 @@ void Foam::couplingReport::countSamples
                 allRemoteAcceptors_[rank] += perSample;
             }
         }
-        workAtPose_ += perSample*imbalance(poseWork);
+    }
+}
+
+
+void Foam::couplingReport::countWorkAtPose
+(
+    const couplingGraph& graph,
+    const labelUList& decomp
+)
+{
+    const labelListList& poseWork = graph.poseWork();
+    for (const labelList& cellWork : poseWork)
+    {
+        scalarList rankWork(cells_.size(), Zero);
+        forAll(decomp, celli)
+        {
+            rankWork[decomp[celli]] += cellWork[celli];
+        }
+        workAtPose_ += imbalance(rankWork)/poseWork.size();
     }
 }
 
@@ -177,7 +191,7 @@ Foam::couplingReport::couplingReport
     allRemoteAcceptors_(nRanks, Zero),
     remoteDonors_(nRanks, Zero),
     donorRanks_(nRanks, Zero),
-    workAtPose_(couplings.nSamples() ? 0 : 1)
+    workAtPose_(graph.poseWork().empty() ? 1 : 0)
 {
     if (decomp.size() != mesh.nCells() || min(decomp) < 0)
     {
@@ -196,6 +210,7 @@ Foam::couplingReport::couplingReport
     countCells(mesh, graph, couplings, decomp);
     countPairs(couplings, decomp);
     countSamples(couplings, decomp);
+    countWorkAtPose(graph, decomp);
 }
 
 

@@ -46,32 +46,28 @@ Foam::labelList Foam::graphPartitioner::metisWeights
 {
     // the constraints' columns: cells, the cycle's overset work, and the
     // work of each group of kept poses; columns without work left out
-    const label nSamples = graph.poseWork().size();
-    const label nGroups =
-        poseGroups_ < 0 ? nSamples : min(poseGroups_, nSamples);
-    List<labelList> columns({graph.cellWeight(), graph.oversetWork()});
-    for (label group = 0; group < nGroups; ++group)
+    const labelListList& poseWork = graph.poseWork();
+    const label nGroups = poseGroups_ < 0
+        ? poseWork.size() : min(poseGroups_, poseWork.size());
+    List<labelList> groupWork(nGroups, labelList(graph.nCells(), Zero));
+    for (label sample = 0; nGroups && sample < poseWork.size(); ++sample)
     {
-        labelList work(graph.nCells(), Zero);
-        forAll(graph.poseWork(), sample)
+        labelList& work = groupWork[sample*nGroups/poseWork.size()];
+        forAll(work, i)
         {
-            if (sample*nGroups/nSamples != group)
-            {
-                continue;
-            }
-            forAll(work, i)
-            {
-                work[i] += graph.poseWork()[sample][i];
-            }
+            work[i] += poseWork[sample][i];
         }
-        columns.append(work);
     }
-    DynamicList<const labelList*> used;
-    for (const labelList& column : columns)
+    DynamicList<const labelList*> used({&graph.cellWeight()});
+    if (sum(graph.oversetWork()) > 0)
     {
-        if (used.empty() || sum(column) > 0)
+        used.append(&graph.oversetWork());
+    }
+    for (const labelList& work : groupWork)
+    {
+        if (sum(work) > 0)
         {
-            used.append(&column);
+            used.append(&work);
         }
     }
     nConstraints = used.size();
