@@ -45,19 +45,26 @@ Foam::labelList Foam::graphPartitioner::metisWeights
 ) const
 {
     // the constraints' columns: cells, the cycle's overset work, and the
-    // work of each group of kept poses; columns without work left out
+    // work of each group of kept poses; columns without work left out.  A
+    // group of one pose is that pose's column; larger groups sum
+    // consecutive poses
     const labelListList& poseWork = graph.poseWork();
-    const label nGroups = poseGroups_ < 0
-        ? poseWork.size() : min(poseGroups_, poseWork.size());
-    List<labelList> groupWork(nGroups, labelList(graph.nCells(), Zero));
-    for (label sample = 0; nGroups && sample < poseWork.size(); ++sample)
+    const label nPoses = poseWork.size();
+    const label nGroups = poseGroups_ < 0 ? nPoses : min(poseGroups_, nPoses);
+    labelListList summed;
+    if (nGroups && nGroups < nPoses)
     {
-        labelList& work = groupWork[sample*nGroups/poseWork.size()];
-        forAll(work, i)
+        summed.setSize(nGroups, labelList(graph.nCells(), Zero));
+        forAll(poseWork, sample)
         {
-            work[i] += poseWork[sample][i];
+            labelList& work = summed[sample*nGroups/nPoses];
+            forAll(work, i)
+            {
+                work[i] += poseWork[sample][i];
+            }
         }
     }
+    const labelListList& groupWork = nGroups == nPoses ? poseWork : summed;
     DynamicList<const labelList*> used({&graph.cellWeight()});
     if (sum(graph.oversetWork()) > 0)
     {
