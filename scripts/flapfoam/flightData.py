@@ -26,8 +26,15 @@ holds one (restarts append to it).
         per column (timers excluded by default); one line per dataset.
 
 One PASS/FAIL line per check; exit status 1 on a failure.  As a module:
-find(case), load(case) -> (attrs, {name: array}), tables(case) -> the
-joints.dat and bodies.dat tables.
+find(case), load(case) -> (attrs, {name: array}), opened(path) -> an open
+h5py.File, tables(case) -> the joints.dat and bodies.dat tables.
+
+A run writes its file without HDF5's file locks and closes it between
+steps, so it can be read while the run goes on; a read that catches the
+file before its first row or in the middle of a row (h5py raises KeyError
+or OSError) is tried again every 20 ms for up to WAIT seconds while the
+file is being written (changed in the last WAIT seconds), then the last
+error is raised.
 """
 
 import argparse
@@ -35,11 +42,14 @@ import glob
 import os
 import re
 import sys
+import time
 
 import numpy as np
 
 from flapfoam.checks import report
 from flapfoam.tables import timeValue
+
+WAIT = 5.0
 
 
 def find(case):
@@ -52,6 +62,38 @@ def find(case):
     return files[0] if files else None
 
 
+def retried(read, path):
+    """read() again while it raises KeyError or OSError and path is being
+    written (a row of a running run), for up to WAIT seconds; then the
+    last error."""
+    deadline = time.monotonic() + WAIT
+    while True:
+        try:
+            return read()
+        except (KeyError, OSError):
+            written = os.path.exists(path) and \
+                time.time() - os.path.getmtime(path) < WAIT
+            if not written or time.monotonic() > deadline:
+                raise
+            time.sleep(0.02)
+
+
+def opened(path):
+    """path opened by h5py (its default shared lock) once its time dataset
+    can be read: a reader that holds the file during the run."""
+    import h5py
+
+    def openWhole():
+        f = h5py.File(path, "r")
+        try:
+            f["time"].shape
+        except BaseException:
+            f.close()
+            raise
+        return f
+    return retried(openWhole, path)
+
+
 def load(case):
     """(attributes, {dataset path: array}) of a run's file."""
     import h5py
@@ -59,16 +101,19 @@ def load(case):
     if path is None:
         raise FileNotFoundError("no postProcessing/flightData/*/flightData.h5"
                                 " in %s" % case)
-    data = {}
-    with h5py.File(path, "r") as f:
-        attrs = {k: (v.decode() if isinstance(v, bytes) else str(v))
-                 for k, v in f.attrs.items()}
 
-        def visit(name, obj):
-            if isinstance(obj, h5py.Dataset):
-                data[name] = obj[()]
-        f.visititems(visit)
-    return attrs, data
+    def read():
+        data = {}
+        with h5py.File(path, "r") as f:
+            attrs = {k: (v.decode() if isinstance(v, bytes) else str(v))
+                     for k, v in f.attrs.items()}
+
+            def visit(name, obj):
+                if isinstance(obj, h5py.Dataset):
+                    data[name] = obj[()]
+            f.visititems(visit)
+        return attrs, data
+    return retried(read, path)
 
 
 def tables(case):
