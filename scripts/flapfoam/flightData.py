@@ -95,7 +95,9 @@ def opened(path):
 
 
 def load(case):
-    """(attributes, {dataset path: array}) of a run's file."""
+    """(attributes, {dataset path: array}) of a run's file: the rows time
+    has (a run writes time last in a row: a dataset's row beyond them is
+    one being written, or one a killed run left half written)."""
     import h5py
     path = find(case)
     if path is None:
@@ -112,6 +114,10 @@ def load(case):
                 if isinstance(obj, h5py.Dataset):
                     data[name] = obj[()]
             f.visititems(visit)
+        if "time" in data:
+            n = len(data["time"])
+            data = {k: v[:n] if len(v) == n + 1 else v
+                    for k, v in data.items()}
         return attrs, data
     return retried(read, path)
 

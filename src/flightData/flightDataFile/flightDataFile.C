@@ -332,6 +332,43 @@ label datasetRows(const hid_t file, const word& name)
       : -1;
 }
 
+//- Write e's values as row nRows of its dataset (made on the first row)
+//- in the open file
+void appendEntry
+(
+    const hid_t file,
+    const hid_t lcpl,
+    const flightDataFile::entry& e,
+    const label nRows,
+    const fileName& path
+)
+{
+    const label nCols = e.columns.empty() ? 1 : e.columns.size();
+
+    if (nCols != e.values.size())
+    {
+        FatalErrorInFunction
+            << "dataset " << e.name << " of " << path << ": "
+            << e.values.size() << " values for " << nCols
+            << " columns"
+            << abort(FatalError);
+    }
+
+    if (H5Lexists(file, e.name.c_str(), H5P_DEFAULT) <= 0)
+    {
+        if (nRows)
+        {
+            FatalErrorInFunction
+                << "dataset " << e.name << " is not in " << path
+                << " (" << nRows << " rows): a restart must write the"
+                << " same datasets as the run before" << exit(FatalError);
+        }
+        createDataset(file, lcpl, e, path);
+    }
+
+    writeRow(file, e, nRows, path);
+}
+
 } // End anonymous namespace
 
 
@@ -359,12 +396,13 @@ Foam::string Foam::flightDataFile::damage(const fileName& path)
         return "its datasets cannot be listed";
     }
 
-    // Every dataset has as many rows as time
+    // Every dataset has as many rows as time, or one more (a row a killed
+    // run left half written: time is written last)
     const label nTimes = datasets.found("time") ? datasetRows(file, "time") : 0;
     for (const word& name : datasets)
     {
         const label n = datasetRows(file, name);
-        if (n != nTimes)
+        if (n != nTimes && n != nTimes + 1)
         {
             return
                 "dataset " + name + " has " + Foam::name(n) + " rows, time "
@@ -409,34 +447,40 @@ Foam::flightDataFile::flightDataFile
         handle file(openFile(path_), H5Fclose);
         check(file, path_, "open (is it an HDF5 file?)");
 
-        // Keep the rows up to the restart time
+        // Keep the rows up to the restart time, as long as the times
+        // increase
         const scalarList times(readTimes(file, path_));
         const scalar tol = 1e-12*max(mag(restartTime), VSMALL);
-        while (nRows_ < times.size() && times[nRows_] <= restartTime + tol)
+        while
+        (
+            nRows_ < times.size() && times[nRows_] <= restartTime + tol
+         && (nRows_ == 0 || times[nRows_] > times[nRows_ - 1])
+        )
         {
             ++nRows_;
         }
 
-        if (nRows_ < times.size())
-        {
-            DynamicList<word> datasets;
-            check
+        // Every dataset cut to them (with the rows after the restart time,
+        // a row a killed run left half written)
+        DynamicList<word> datasets;
+        check
+        (
+            H5Ovisit
             (
-                H5Ovisit
-                (
-                    file, H5_INDEX_NAME, H5_ITER_INC, collectDatasets,
-                    &datasets
-                ),
-                path_,
-                "list the datasets"
-            );
-            for (const word& name : datasets)
+                file, H5_INDEX_NAME, H5_ITER_INC, collectDatasets, &datasets
+            ),
+            path_,
+            "list the datasets"
+        );
+        for (const word& name : datasets)
+        {
+            handle ds(H5Dopen(file, name.c_str(), H5P_DEFAULT), H5Dclose);
+            check(ds, path_, "open dataset " + name);
+            handle space(H5Dget_space(ds), H5Sclose);
+            hsize_t dims[2] = {0, 0};
+            H5Sget_simple_extent_dims(space, dims, nullptr);
+            if (label(dims[0]) > nRows_)
             {
-                handle ds(H5Dopen(file, name.c_str(), H5P_DEFAULT), H5Dclose);
-                check(ds, path_, "open dataset " + name);
-                handle space(H5Dget_space(ds), H5Sclose);
-                hsize_t dims[2] = {0, 0};
-                H5Sget_simple_extent_dims(space, dims, nullptr);
                 dims[0] = nRows_;
                 check
                 (
@@ -484,33 +528,29 @@ void Foam::flightDataFile::append(const row& r)
     handle lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
     H5Pset_create_intermediate_group(lcpl, 1);
 
+    // time written last, after the others are flushed to the file: a kill
+    // inside the write leaves the other datasets at most one row longer
+    // than time, never time longer than them
+    const entry* time = nullptr;
     for (const entry& e : r)
     {
-        const label nCols = e.columns.empty() ? 1 : e.columns.size();
-
-        if (nCols != e.values.size())
+        if (e.name == "time")
         {
-            FatalErrorInFunction
-                << "dataset " << e.name << " of " << path_ << ": "
-                << e.values.size() << " values for " << nCols
-                << " columns"
-                << abort(FatalError);
+            time = &e;
         }
-
-        if (H5Lexists(file, e.name.c_str(), H5P_DEFAULT) <= 0)
+        else
         {
-            if (nRows_)
-            {
-                FatalErrorInFunction
-                    << "dataset " << e.name << " is not in " << path_
-                    << " (" << nRows_ << " rows): a restart must write the"
-                    << " same datasets as the run before" << exit(FatalError);
-            }
-            createDataset(file, lcpl, e, path_);
+            appendEntry(file, lcpl, e, nRows_, path_);
         }
-
-        writeRow(file, e, nRows_, path_);
     }
+    if (!time)
+    {
+        FatalErrorInFunction
+            << "a row of " << path_ << " without dataset time"
+            << abort(FatalError);
+    }
+    check(H5Fflush(file, H5F_SCOPE_LOCAL), path_, "flush");
+    appendEntry(file, lcpl, *time, nRows_, path_);
 
     ++nRows_;
 }
