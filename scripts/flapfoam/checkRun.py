@@ -106,7 +106,7 @@ def checkPrescribed(args):
     if not imposed:
         return report(False, "prescribed", "no imposedMotion entries")
 
-    def errors(t, q, qDot, qDdot, qi, ev):
+    def errors(t, q, qDot, qDdot, ev):
         w = 2.0*math.pi*ev.frequency
         qa, qDa, qDDa = ev(t)
         return (np.abs(q - qa)/ev.amplitude,
@@ -119,7 +119,7 @@ def checkPrescribed(args):
     for s in sts:
         for qi, ev in imposed.items():
             e = errors(s["t"], s["q"][qi], s["qDot"][qi], s["qDdot"][qi],
-                       qi, ev)
+                       ev)
             eState = np.maximum(eState, [float(x) for x in e])
 
     # every row of joints.dat
@@ -128,7 +128,7 @@ def checkPrescribed(args):
     eTable = np.zeros(3)
     for qi, ev in imposed.items():
         e = errors(J[:, 0], J[:, c["q_%d" % qi]], J[:, c["qDot_%d" % qi]],
-                   J[:, c["qDdot_%d" % qi]], qi, ev)
+                   J[:, c["qDdot_%d" % qi]], ev)
         eTable = np.maximum(eTable, [float(x.max()) for x in e])
 
     ok = len(sts) > 0 and eState.max() <= args.tol \

@@ -190,10 +190,11 @@ def worstGrid(rows, grid, pair, value):
     return xs, ys, np.array([[worst(x, y) for x in xs] for y in ys])
 
 
-def plot(path, rows, grid, pair, bands, title):
+def plot(figure, rows, grid, pair, bands):
     """Heat-maps (or curves) of maxAbsError/band per controlled quantity
     (bands: {LOOP.TERM: band}) and of the score; out-of-band points
-    crossed, failed points black."""
+    crossed, failed points black; figure: (path, title)."""
+    path, title = figure
     from flapfoam.plotting import plt
     panels = [(label, "max |e|/band after T",
                lambda r, k=label: r[k + ".maxAbsError"]/bands[k])
@@ -305,10 +306,10 @@ def main(argv=None):
                   len(rows), args.cycles, args.deltaT, args.np,
                   time.time() - start,
                   np.mean([r["seconds"] for r in rows]), args.o))
-        plot(args.o + ".png", rows, grid, pair, bands,
-             "%s -variant %s: %d points, %d cycles, T = %g s" % (
-                 os.path.basename(os.path.normpath(args.case)),
-                 args.variant, len(rows), args.cycles, settle))
+        title = "%s -variant %s: %d points, %d cycles, T = %g s" % (
+            os.path.basename(os.path.normpath(args.case)), args.variant,
+            len(rows), args.cycles, settle)
+        plot((args.o + ".png", title), rows, grid, pair, bands)
         report(rows, grid, template.terms, settle)
     except (SweepError, ControlPlotError) as e:
         sys.exit("flapfoam.gainSweep: %s" % e)

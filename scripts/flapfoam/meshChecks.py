@@ -173,9 +173,12 @@ def meshCheck(argv=None):
 # --------------------------------------------------------------------------
 # The orphan check
 
-def cellCentresApprox(points, offs, verts, owner, neighbour, nCells):
+def cellCentresApprox(points, mesh, nCells):
     """Cell centres as the average of the face centres (good enough to
-    measure distances of cells to the wing)."""
+    measure distances of cells to the wing); mesh: the faces (offs, verts)
+    and their owner and neighbour."""
+    offs, verts = mesh.offs, mesh.verts
+    owner, neighbour = mesh.owner, mesh.neighbour
     sizes = offs[1:] - offs[:-1]
     fc = np.zeros((len(sizes), 3))
     for n in np.unique(sizes):
@@ -289,8 +292,7 @@ def checkTime(case, t, m, gen):
         types = np.full(nCells, int(types)) if np.isscalar(types) \
             else types
     pts = meshAt(case, t)
-    cc, fc = cellCentresApprox(pts, m.offs, m.verts, m.owner, m.neighbour,
-                               nCells)
+    cc, fc = cellCentresApprox(pts, m, nCells)
 
     res = {"time": t}
     for z, name in ((0, "background"), (1, "wing")):

@@ -39,7 +39,9 @@ import numpy as np
 from flapfoam.stepTimers import GROUPS, read_input, summary
 
 
-def plot(labels, means, columns_list, fine, output, title):
+def plot(labels, means, columns_list, args):
+    """The stacked bars of the step's parts; args: fine (the overset
+    part's own parts), output, title."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -49,7 +51,7 @@ def plot(labels, means, columns_list, fine, output, title):
     colors = {"rbd": "tab:green", "overset": "tab:red",
               "pimple": "tab:blue", "other": "lightgrey"}
     overset_parts = []
-    if fine:
+    if args.fine:
         for columns in columns_list:
             for c in columns:
                 if c.startswith("overset") and c not in overset_parts \
@@ -78,13 +80,13 @@ def plot(labels, means, columns_list, fine, output, title):
     ax.set_xticklabels(labels, rotation=15 if len(labels) > 2 else 0,
                        fontsize=8)
     ax.set_ylabel("wall-clock time per step [s]")
-    ax.set_title(title or "Where a time step's time goes")
+    ax.set_title(args.title or "Where a time step's time goes")
     handles, names = ax.get_legend_handles_labels()
     ax.legend(handles[::-1], names[::-1], fontsize=8, loc="upper left",
               bbox_to_anchor=(1.0, 1.0))
     fig.tight_layout()
-    fig.savefig(output, dpi=150)
-    print("plotStepTimers: wrote " + output)
+    fig.savefig(args.output, dpi=150)
+    print("plotStepTimers: wrote " + args.output)
 
 
 def main():
@@ -119,7 +121,7 @@ def main():
         means.append(summary(label, columns, data))
         columns_list.append(columns)
 
-    plot(labels, means, columns_list, args.fine, args.output, args.title)
+    plot(labels, means, columns_list, args)
 
 
 if __name__ == "__main__":

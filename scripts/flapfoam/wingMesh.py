@@ -84,10 +84,10 @@ def offsetArc(t0, t1, d, n=4000):
     return geo.edgePoint(t) + d*geo.edgeNormal(t)
 
 
-def circleArc(c, r, a0, a1, n=400, ry=None):
+def circleArc(c, r, a0, a1, ry=None):
     """Arc of the circle (or, with ry, the ellipse of radii r along x and
-    ry along y) about c from angle a0 to a1."""
-    a = np.linspace(a0, a1, n)
+    ry along y) about c from angle a0 to a1, 400 points."""
+    a = np.linspace(a0, a1, 400)
     ry = r if ry is None else ry
     return np.stack([c[0] + r*np.cos(a), c[1] + ry*np.sin(a)], axis=1)
 

@@ -33,9 +33,17 @@ LINE = {"Newmark": dict(lw=2.5, alpha=0.6), "symplectic": dict(lw=1),
 TEX = {"theta1": r"\theta_1", "theta2": r"\theta_2"}
 
 
-def errorPanel(a, ref, runs, key, ylabel, scale=1.0):
-    """|run - reference| of key over scale, each integrator, with the
-    acceptance limit and the end of its window."""
+# error panels: key -> (y label, over max |reference| or not)
+ERROR = {"theta2": (r"$|\theta_2 - \theta_{2,ref}|$ [rad]", False),
+         "tau1": (r"$|\tau_1 - \tau_{1,ref}|$ / max $|\tau_{1,ref}|$", True)}
+
+
+def errorPanel(a, ref, runs, key):
+    """|run - reference| of key (over max |reference| where ERROR says so),
+    each integrator, with the acceptance limit and the end of its
+    window."""
+    ylabel, relative = ERROR[key]
+    scale = np.abs(ref[key]).max() if relative else 1.0
     for name, e in runs.items():
         d = np.abs(e[key] - compare.on_times(ref, e["time"], key))
         a.semilogy(e["time"], np.maximum(d, 1e-16)/scale,
@@ -79,11 +87,8 @@ def plot_prescribed(case, out):
     a.set_title("torque of the driven joint")
     a.legend(fontsize=8)
 
-    errorPanel(ax[1, 0], ref, runs, "theta2",
-               r"$|\theta_2 - \theta_{2,ref}|$ [rad]")
-    errorPanel(ax[1, 1], ref, runs, "tau1",
-               r"$|\tau_1 - \tau_{1,ref}|$ / max $|\tau_{1,ref}|$",
-               np.abs(ref["tau1"]).max())
+    errorPanel(ax[1, 0], ref, runs, "theta2")
+    errorPanel(ax[1, 1], ref, runs, "tau1")
 
     fig.suptitle(r"Double pendulum, $\theta_1 = A\cos(2\pi f t) - A$, "
                  r"A = 57 deg, f = 2 Hz: eABA vs Lagrange")
