@@ -63,41 +63,42 @@ void Foam::imposedMotionBlend::evaluateStage
     const label k,
     const label i,
     const scalar t,
-    scalar& q,
-    scalar& qDot,
-    scalar& qDdot
+    jointState& s
 ) const
 {
     if (k == 0 || t >= t0_[k] + blendTime_[k])
     {
-        motions_[k].evaluate(i, t + shift_[k], q, qDot, qDdot);
+        motions_[k].evaluate(i, t + shift_[k], s.q, s.qDot, s.qDdot);
         return;
     }
 
     if (t <= t0_[k])
     {
-        evaluateStage(k - 1, i, t, q, qDot, qDdot);
+        evaluateStage(k - 1, i, t, s);
         return;
     }
 
     // Inside the blend (Tb > 0 here): old and new motion
-    scalar qo, qDoto, qDdoto;
-    evaluateStage(k - 1, i, t, qo, qDoto, qDdoto);
+    jointState old;
+    evaluateStage(k - 1, i, t, old);
+    scalar q, qDot, qDdot;
     motions_[k].evaluate(i, t + shift_[k], q, qDot, qDdot);
+    const scalar qo = old.q, qDoto = old.qDot, qDdoto = old.qDdot;
 
-    // Quintic smoothstep s(x), x = (t - t0)/Tb, and its time derivatives
+    // Quintic smoothstep s0 = s(x), x = (t - t0)/Tb, and its time
+    // derivatives s1, s2
     const scalar Tb = blendTime_[k];
     const scalar x = (t - t0_[k])/Tb;
-    const scalar s = x*x*x*(10 + x*(-15 + 6*x));
+    const scalar s0 = x*x*x*(10 + x*(-15 + 6*x));
     const scalar s1 = 30*sqr(x*(1 - x))/Tb;
     const scalar s2 = 60*x*(1 - x)*(1 - 2*x)/sqr(Tb);
 
     const scalar dq = q - qo;
     const scalar dqDot = qDot - qDoto;
 
-    qDdot = qDdoto + s*(qDdot - qDdoto) + 2*s1*dqDot + s2*dq;
-    qDot = qDoto + s*dqDot + s1*dq;
-    q = qo + s*dq;
+    s.qDdot = qDdoto + s0*(qDdot - qDdoto) + 2*s1*dqDot + s2*dq;
+    s.qDot = qDoto + s0*dqDot + s1*dq;
+    s.q = qo + s0*dq;
 }
 
 
@@ -249,7 +250,11 @@ void Foam::imposedMotionBlend::evaluate
     scalar& qDdot
 ) const
 {
-    evaluateStage(motions_.size() - 1, i, t, q, qDot, qDdot);
+    jointState s;
+    evaluateStage(motions_.size() - 1, i, t, s);
+    q = s.q;
+    qDot = s.qDot;
+    qDdot = s.qDdot;
 }
 
 
