@@ -351,58 +351,108 @@ TEST(stepTimersRegistry, stamps)
 
 // * * * * * * * * * * * * * * Function object  * * * * * * * * * * * * * * //
 
-TEST(stepTimersFunctionObject, rowsHeaderClosureSummary)
+//- A run of nSteps steps timed as a solver times them (the parts
+//- registered before the first step as timedOversetFvMesh does, the rbd
+//- scope inside oversetMovePoints, oversetLate from lateStep on), with the
+//- seconds slept in each step's scopes
+struct timedSteps
 {
-    const label nSteps = 6;
-    const label nStartup = 1;
-    const label lateStep = 4;   // first step of the part used late
+    static constexpr label nSteps = 6;
+    static constexpr label nStartup = 1;
+    static constexpr label lateStep = 4;   // first step of oversetLate
 
-    scratchTime runTimePtr
-    (
-        "flapFoamTest-stepTimers",
-        nSteps,
-        1,
-        stepTimersFunctions(nStartup)
-    );
-    Time& runTime = runTimePtr();
+    //- The scratch case (removed with the object)
+    scratchTime runTimePtr;
 
-    // As timedOversetFvMesh: parts registered before the first step
-    stepTimers& timers = stepTimers::New(runTime);
-    timers.add("oversetMovePoints", 0);
-
-    // The seconds slept in each step's rbd, oversetMovePoints (its own)
-    // and oversetLate scopes
     std::vector<scalar> sleptRbd, sleptMovePoints, sleptLate;
-    while (runTime.loop())
+    fileName dir;
+
+    timedSteps()
+    :
+        runTimePtr
+        (
+            "flapFoamTest-stepTimers", nSteps, 1,
+            stepTimersFunctions(nStartup)
+        )
     {
-        // Solver work before the mesh update
-        sleepMs(1);
-        timers.stamp(stepTimers::meshUpdateStart);
+        Time& runTime = runTimePtr();
+        stepTimers& timers = stepTimers::New(runTime);
+        timers.add("oversetMovePoints", 0);
 
-        // The mesh update: the motion solver inside the point motion
+        while (runTime.loop())
         {
-            stepTimers::scope t(timers, "oversetMovePoints");
-            sleptMovePoints.push_back(sleepMs(3));
+            // Solver work before the mesh update
+            sleepMs(1);
+            timers.stamp(stepTimers::meshUpdateStart);
             {
-                stepTimers::scope t(timers, "rbd");
-                sleptRbd.push_back(sleepMs(2));
+                stepTimers::scope t(timers, "oversetMovePoints");
+                sleptMovePoints.push_back(sleepMs(3));
+                {
+                    stepTimers::scope t(timers, "rbd");
+                    sleptRbd.push_back(sleepMs(2));
+                }
             }
-        }
-        sleptLate.push_back(0);
-        if (runTime.timeIndex() >= lateStep)
-        {
-            stepTimers::scope t(timers, "oversetLate");
-            sleptLate.back() = sleepMs(1);
-        }
-        timers.stamp(stepTimers::meshUpdated);
+            sleptLate.push_back(0);
+            if (runTime.timeIndex() >= lateStep)
+            {
+                stepTimers::scope t(timers, "oversetLate");
+                sleptLate.back() = sleepMs(1);
+            }
+            timers.stamp(stepTimers::meshUpdated);
 
-        // PIMPLE
-        sleepMs(5);
+            // PIMPLE
+            sleepMs(5);
+        }
+        dir = outputDir(runTime);
     }
+};
 
-    const fileName dir(outputDir(runTime));
-    ASSERT_TRUE(isFile(dir/"stepTimers.dat")) << dir;
-    const datFile dat(dir/"stepTimers.dat");
+
+//- The checks of row i of a timedSteps run's stepTimers.dat
+void checkRow(const datFile& dat, const timedSteps& run, const size_t i)
+{
+    SCOPED_TRACE("row " + std::to_string(i));
+    const bool late = label(i) + 1 >= timedSteps::lateStep;
+
+    EXPECT_EQ(dat.headerOfRow[i], late ? 1u : 0u);
+    EXPECT_DOUBLE_EQ(dat(i, "time"), i + 1);
+
+    EXPECT_GE(dat(i, "rbd"), 0.002);
+    EXPECT_LT(dat(i, "rbd"), run.sleptRbd[i] + margin);
+    EXPECT_GE(dat(i, "oversetMovePoints"), 0.003);
+    EXPECT_LT(dat(i, "oversetMovePoints"), run.sleptMovePoints[i] + margin);
+    // Exact but for the file's 6 significant digits
+    EXPECT_NEAR
+    (
+        dat(i, "overset"),
+        dat(i, "oversetMovePoints") + (late ? dat(i, "oversetLate") : 0),
+        2e-6*dat(i, "overset")
+    );
+    if (late)
+    {
+        EXPECT_GE(dat(i, "oversetLate"), 0.001);
+    }
+    EXPECT_GE(dat(i, "pimple"), 0.005);
+    EXPECT_GE(dat(i, "preUpdate"), 0.001);
+
+    const double sum = dat(i, "rbd") + dat(i, "overset") + dat(i, "pimple");
+    EXPECT_LE(sum, dat(i, "total"));
+    // The loop's deliberate pre-update sleep (preUpdate) belongs to none of
+    // the three; on a busy machine it oversleeps
+    EXPECT_NEAR
+    (
+        sum, dat(i, "total"), 0.05*dat(i, "total") + dat(i, "preUpdate") + 0.001
+    );
+    // With preUpdate the step is covered but for the loop's own overhead
+    EXPECT_NEAR(sum + dat(i, "preUpdate"), dat(i, "total"), 2e-3);
+}
+
+
+TEST(stepTimersFunctionObject, headersAndRows)
+{
+    timedSteps run;
+    ASSERT_TRUE(isFile(run.dir/"stepTimers.dat")) << run.dir;
+    const datFile dat(run.dir/"stepTimers.dat");
 
     // Header at the first step, another when oversetLate appeared
     ASSERT_EQ(dat.headers.size(), 2u);
@@ -416,55 +466,30 @@ TEST(stepTimersFunctionObject, rowsHeaderClosureSummary)
     second.push_back("oversetLate");
     EXPECT_EQ(dat.headers[1], second);
 
-    ASSERT_EQ(dat.rows.size(), size_t(nSteps));
+    ASSERT_EQ(dat.rows.size(), size_t(timedSteps::nSteps));
     for (size_t i = 0; i < dat.rows.size(); ++i)
     {
-        SCOPED_TRACE("row " + std::to_string(i));
-        const bool late = label(i) + 1 >= lateStep;
-
-        EXPECT_EQ(dat.headerOfRow[i], late ? 1u : 0u);
-        EXPECT_DOUBLE_EQ(dat(i, "time"), i + 1);
-
-        EXPECT_GE(dat(i, "rbd"), 0.002);
-        EXPECT_LT(dat(i, "rbd"), sleptRbd[i] + margin);
-        EXPECT_GE(dat(i, "oversetMovePoints"), 0.003);
-        EXPECT_LT(dat(i, "oversetMovePoints"), sleptMovePoints[i] + margin);
-        // Exact but for the file's 6 significant digits
-        EXPECT_NEAR
-        (
-            dat(i, "overset"),
-            dat(i, "oversetMovePoints") + (late ? dat(i, "oversetLate") : 0),
-            2e-6*dat(i, "overset")
-        );
-        if (late)
-        {
-            EXPECT_GE(dat(i, "oversetLate"), 0.001);
-        }
-        EXPECT_GE(dat(i, "pimple"), 0.005);
-
-        EXPECT_GE(dat(i, "preUpdate"), 0.001);
-
-        const double sum = dat(i, "rbd") + dat(i, "overset") + dat(i, "pimple");
-        EXPECT_LE(sum, dat(i, "total"));
-        // The loop's deliberate pre-update sleep (preUpdate) belongs to
-        // none of the three; on a busy machine it oversleeps
-        EXPECT_NEAR
-        (
-            sum,
-            dat(i, "total"),
-            0.05*dat(i, "total") + dat(i, "preUpdate") + 0.001
-        );
-
-        // With preUpdate the step is covered but for the loop's own
-        // overhead
-        EXPECT_NEAR(sum + dat(i, "preUpdate"), dat(i, "total"), 2e-3);
+        checkRow(dat, run, i);
     }
 
-    // Summary: steps after the start-up, total's share 1
-    ASSERT_TRUE(isFile(dir/"stepTimersSummary.dat"));
+    // Reset after each step
+    const stepTimers& timers = stepTimers::New(run.runTimePtr());
+    EXPECT_EQ(timers["rbd"], 0);
+    EXPECT_FALSE(timers.stamped(stepTimers::meshUpdated));
+}
+
+
+TEST(stepTimersFunctionObject, summary)
+{
+    const timedSteps run;
+    const label nSteps = timedSteps::nSteps;
+    const label nStartup = timedSteps::nStartup;
+
+    // Steps after the start-up, total's share 1
+    ASSERT_TRUE(isFile(run.dir/"stepTimersSummary.dat"));
     bool foundSteps = false;
     bool foundTotal = false;
-    for (const std::string& line : readLines(dir/"stepTimersSummary.dat"))
+    for (const std::string& line : readLines(run.dir/"stepTimersSummary.dat"))
     {
         const std::vector<std::string> w = split(line);
         if (w.size() >= 3 && w[0] == "#" && w[1] == "nSteps")
@@ -482,21 +507,21 @@ TEST(stepTimersFunctionObject, rowsHeaderClosureSummary)
         {
             // Zero in the steps before its first use
             const double meanLate = std::stod(w[1]);
-            EXPECT_GE(meanLate, 0.001*(nSteps - lateStep + 1)/(nSteps - 1));
+            EXPECT_GE
+            (
+                meanLate,
+                0.001*(nSteps - timedSteps::lateStep + 1)/(nSteps - 1)
+            );
             scalar meanSlept = 0;
             for (label i = nStartup; i < nSteps; ++i)
             {
-                meanSlept += sleptLate[i]/(nSteps - nStartup);
+                meanSlept += run.sleptLate[i]/(nSteps - nStartup);
             }
             EXPECT_LT(meanLate, meanSlept + margin);
         }
     }
     EXPECT_TRUE(foundSteps);
     EXPECT_TRUE(foundTotal);
-
-    // Reset after each step
-    EXPECT_EQ(timers["rbd"], 0);
-    EXPECT_FALSE(timers.stamped(stepTimers::meshUpdated));
 }
 
 
