@@ -53,12 +53,14 @@ Foam::imposedMotions::wang::readWaveform(const dictionary& dict)
 
     return wangWaveform
     (
-        waveform,
-        amplitude,
-        frequency,
-        K,
-        dict.getOrDefault<scalar>("phase", 0),
-        dict.getOrDefault<scalar>("offset", 0)
+        {
+            waveform,
+            amplitude,
+            frequency,
+            K,
+            dict.getOrDefault<scalar>("phase", 0),
+            dict.getOrDefault<scalar>("offset", 0)
+        }
     );
 }
 

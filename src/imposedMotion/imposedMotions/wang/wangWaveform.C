@@ -36,28 +36,20 @@ Foam::imposedMotions::wangWaveform::shapeNames
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::imposedMotions::wangWaveform::wangWaveform
-(
-    const shape waveform,
-    const scalar amplitude,
-    const scalar frequency,
-    const scalar K,
-    const scalar phase,
-    const scalar offset
-)
+Foam::imposedMotions::wangWaveform::wangWaveform(const parameters& p)
 :
-    shape_(waveform),
-    amplitude_(amplitude),
-    frequency_(frequency),
-    K_(K),
-    phase_(phase),
-    offset_(offset),
-    omega_(constant::mathematical::twoPi*frequency),
+    shape_(p.waveform),
+    amplitude_(p.amplitude),
+    frequency_(p.frequency),
+    K_(p.K),
+    phase_(p.phase),
+    offset_(p.offset),
+    omega_(constant::mathematical::twoPi*p.frequency),
     S_
     (
-        waveform == shape::flapping
-      ? amplitude/::asin(K)
-      : amplitude/::tanh(K)
+        p.waveform == shape::flapping
+      ? p.amplitude/::asin(p.K)
+      : p.amplitude/::tanh(p.K)
     )
 {}
 

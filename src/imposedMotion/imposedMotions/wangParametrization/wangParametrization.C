@@ -157,7 +157,7 @@ Foam::imposedMotions::wangParametrization::readPhi
 
     return wangWaveform
     (
-        wangWaveform::shape::flapping, amplitudeSign(type)*A, f, K, phase
+        {wangWaveform::shape::flapping, amplitudeSign(type)*A, f, K, phase, 0}
     );
 }
 
@@ -182,12 +182,14 @@ Foam::imposedMotions::wangParametrization::readAlpha
 
     return wangWaveform
     (
-        wangWaveform::shape::pitching,
-        amplitudeSign(type)*A,
-        f,
-        K,
-        phase,
-        offset
+        {
+            wangWaveform::shape::pitching,
+            amplitudeSign(type)*A,
+            f,
+            K,
+            phase,
+            offset
+        }
     );
 }
 
