@@ -39,6 +39,7 @@ Description
 #include "stepTimers.H"
 #include "stepTimersFunctionObject.H"
 #include "scratchTime.H"
+#include "stepTimersDat.H"
 #include "OSspecific.H"
 
 #include <gtest/gtest.h>
@@ -85,84 +86,6 @@ dictionary stepTimersFunctions(const label nStartup)
     functions.add("stepTimers", fo);
     return functions;
 }
-
-
-//- A file's lines
-std::vector<std::string> readLines(const fileName& name)
-{
-    std::ifstream is(name);
-    std::vector<std::string> lines;
-    for (std::string line; std::getline(is, line);)
-    {
-        lines.push_back(line);
-    }
-    return lines;
-}
-
-
-//- Whitespace-separated words of a line
-std::vector<std::string> split(const std::string& line)
-{
-    std::istringstream is(line);
-    std::vector<std::string> words;
-    for (std::string w; is >> w;)
-    {
-        words.push_back(w);
-    }
-    return words;
-}
-
-
-//- Column headers ('# time ...' lines, without the '#') and data rows of
-//- a stepTimers.dat
-struct datFile
-{
-    std::vector<std::vector<std::string>> headers;
-    std::vector<std::vector<double>> rows;
-    std::vector<size_t> headerOfRow;
-
-    explicit datFile(const fileName& name)
-    {
-        for (const std::string& line : readLines(name))
-        {
-            std::vector<std::string> w = split(line);
-            if (w.empty())
-            {
-                continue;
-            }
-            if (w[0] == "#")
-            {
-                if (w.size() > 1 && w[1] == "time")
-                {
-                    headers.emplace_back(w.begin() + 1, w.end());
-                }
-                continue;
-            }
-            std::vector<double> row;
-            for (const std::string& s : w)
-            {
-                row.push_back(std::stod(s));
-            }
-            rows.push_back(row);
-            headerOfRow.push_back(headers.size() - 1);
-        }
-    }
-
-    //- Value of a named column in a row
-    double operator()(const size_t rowi, const std::string& column) const
-    {
-        const std::vector<std::string>& h = headers.at(headerOfRow[rowi]);
-        for (size_t i = 0; i < h.size(); ++i)
-        {
-            if (h[i] == column)
-            {
-                return rows[rowi].at(i);
-            }
-        }
-        ADD_FAILURE() << "no column " << column;
-        return 0;
-    }
-};
 
 
 //- The output folder of the function object of a Time
