@@ -79,11 +79,9 @@ void Foam::imposedMotionBlend::evaluateStage
     }
 
     // Inside the blend (Tb > 0 here): old and new motion
-    jointState old;
+    jointState old, now;
     evaluateStage(k - 1, i, t, old);
-    scalar q, qDot, qDdot;
-    motions_[k].evaluate(i, t + shift_[k], q, qDot, qDdot);
-    const scalar qo = old.q, qDoto = old.qDot, qDdoto = old.qDdot;
+    motions_[k].evaluate(i, t + shift_[k], now.q, now.qDot, now.qDdot);
 
     // Quintic smoothstep s0 = s(x), x = (t - t0)/Tb, and its time
     // derivatives s1, s2
@@ -93,12 +91,13 @@ void Foam::imposedMotionBlend::evaluateStage
     const scalar s1 = 30*sqr(x*(1 - x))/Tb;
     const scalar s2 = 60*x*(1 - x)*(1 - 2*x)/sqr(Tb);
 
-    const scalar dq = q - qo;
-    const scalar dqDot = qDot - qDoto;
+    const scalar dq = now.q - old.q;
+    const scalar dqDot = now.qDot - old.qDot;
 
-    s.qDdot = qDdoto + s0*(qDdot - qDdoto) + 2*s1*dqDot + s2*dq;
-    s.qDot = qDoto + s0*dqDot + s1*dq;
-    s.q = qo + s0*dq;
+    s.qDdot =
+        old.qDdot + s0*(now.qDdot - old.qDdot) + 2*s1*dqDot + s2*dq;
+    s.qDot = old.qDot + s0*dqDot + s1*dq;
+    s.q = old.q + s0*dq;
 }
 
 

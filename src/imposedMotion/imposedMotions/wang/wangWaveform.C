@@ -38,12 +38,7 @@ Foam::imposedMotions::wangWaveform::shapeNames
 
 Foam::imposedMotions::wangWaveform::wangWaveform(const parameters& p)
 :
-    shape_(p.waveform),
-    amplitude_(p.amplitude),
-    frequency_(p.frequency),
-    K_(p.K),
-    phase_(p.phase),
-    offset_(p.offset),
+    p_(p),
     omega_(constant::mathematical::twoPi*p.frequency),
     S_
     (
@@ -128,15 +123,15 @@ void Foam::imposedMotions::wangWaveform::evaluate
     scalar& qDdot
 ) const
 {
-    const scalar theta = omega_*t + phase_;
+    const scalar theta = omega_*t + p_.phase;
     const scalar c = ::cos(theta);
     const scalar s = ::sin(theta);
 
-    if (shape_ == shape::flapping)
+    if (p_.waveform == shape::flapping)
     {
         // u = K cos(theta), u' = -K omega sin(theta), u'' = -omega^2 u
-        const scalar u = K_*c;
-        const scalar du = -K_*omega_*s;
+        const scalar u = p_.K*c;
+        const scalar du = -p_.K*omega_*s;
         const scalar ddu = -omega_*omega_*u;
 
         // 1 - u^2 >= 1 - K^2 > 0
@@ -144,7 +139,7 @@ void Foam::imposedMotions::wangWaveform::evaluate
         const scalar invRoot = 1/::sqrt(oneMinusU2);
 
         // q = q_0 + S asin(u)
-        q = offset_ + S_*::asin(u);
+        q = p_.offset + S_*::asin(u);
 
         // qDot = S u'/sqrt(1 - u^2)
         qDot = S_*du*invRoot;
@@ -155,8 +150,8 @@ void Foam::imposedMotions::wangWaveform::evaluate
     else
     {
         // v = K sin(theta), v' = K omega cos(theta), v'' = -omega^2 v
-        const scalar v = K_*s;
-        const scalar dv = K_*omega_*c;
+        const scalar v = p_.K*s;
+        const scalar dv = p_.K*omega_*c;
         const scalar ddv = -omega_*omega_*v;
 
         // sech^2 from cosh, not 1 - tanh^2: accurate where tanh(v) ~ 1
@@ -166,7 +161,7 @@ void Foam::imposedMotions::wangWaveform::evaluate
         const scalar sech2 = sech*sech;
 
         // q = q_0 + S tanh(v)
-        q = offset_ + S_*th;
+        q = p_.offset + S_*th;
 
         // qDot = S v' sech^2(v)
         qDot = S_*dv*sech2;
