@@ -6,13 +6,17 @@
 known (bench/scaling/Alltest runs it): flapfoam.rankTables (a couplingReport
 and an oversetRankReport table with their extra lines, cellDist to
 cellDecomposition, neighbour ranks of a 2x2 mesh) and flapfoam.scalingModel
-(an exact traffic fit, the step of a 2-rank decomposition by hand, the
-values the busiest rank receives per sweep).  PASS
-and FAIL lines; exit status 1 if one fails.
+(an exact traffic fit, the step of a 2-rank decomposition by hand, octree
+and stock, the values the busiest rank receives per sweep, the step of an
+oversetRankReport) and flapfoam.scalingValidate (the committed model
+against bench/scaling/measured's 16-core runs, its calibration
+reproduced).  PASS and FAIL lines; exit status 1 if one fails.
 
     bench/scaling/checkModel.py DIR      (DIR: a scratch folder)
 """
 
+import fnmatch
+import glob
 import os
 import sys
 
@@ -21,6 +25,8 @@ import numpy as np
 sys.path.insert(0, os.environ.get("FLAPFOAM_PROJECT_DIR", os.path.join(
     os.path.dirname(os.path.abspath(__file__)), "../..")) + "/scripts")
 from flapfoam import rankTables, scalingModel  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
 
 HEADER = "FoamFile { version 2.0; format ascii; class %s; object %s; }\n"
 REPORT = """x: 2 ranks, 6 cells, 3 poses of "c", decomposition "d"
@@ -79,8 +85,14 @@ def check_model():
     check("traffic fit exact", np.allclose(fit.bytes, [5, 7, 3])
           and np.allclose(fit.messages, [2, 1, 0], atol=1e-9)
           and fit.error.max() < 1e-12, "%s %s" % (fit.bytes, fit.messages))
-    costs = scalingModel.Costs((1e-6, 1e-9), (10, 2, 4), fit)
+    # S(2) = sqrt((1 + 1)/(1 + 1/4)) with pSat 2; G(2) = 1.5 with growth
+    # 0.5; I1 = 100 iterations
+    cal = scalingModel.Calibration(pSat=2.0, cIter=1e-5, growth=0.5,
+                                   vParallel=2e-3, bStock=0.1,
+                                   iterations=100.0)
+    costs = scalingModel.Costs((1e-6, 1e-9), (10, 2, 4), fit, cal)
     costs.cCell, costs.cWork, costs.rbd = 1e-6, 1e-5, 0.01
+    s2 = (1.6)**0.5
     table = {"columns": ["cells", "processorFaces", "oversetWork",
                          "remotePairs", "acceptors", "pairs"],
              "rows": [{"cells": 1000, "processorFaces": 50,
@@ -92,14 +104,22 @@ def check_model():
              "info": {}}
     step = scalingModel.predict(costs, scalingModel.Decomposition(table,
                                                                   [1, 1]))
-    # overset: rank 1's work 1e-5*300 + rank 0's traffic 1e-6 (2 + 1) +
-    # 1e-9 (5 + 7 + 3*10); rank 0 pimple: 1e-3 + 1e-6 (10 + 4*2) +
-    # 1e-9*2*8*50
-    overset = 3e-3 + 3e-6 + 42e-9
-    pimple = 1e-3 + 18e-6 + 800e-9
+    # overset: rank 1's work 1e-5 S 300 + vParallel + rank 0's traffic
+    # 1e-6 (2 + 1) + 1e-9 (5 + 7 + 3*10); rank 0 pimple: G (1e-6 S 1000 +
+    # 100 1e-5 1 + 1e-9 2 8 50)
+    overset = 3e-3*s2 + 2e-3 + 3e-6 + 42e-9
+    pimple = 1.5*(1e-3*s2 + 1e-3 + 800e-9)
     check("step of 2 ranks", abs(step["overset"] - overset) < 1e-15
           and abs(step["pimple"] - pimple) < 1e-15
           and abs(step["total"] - 0.01 - overset - pimple) < 1e-15, str(step))
+    # the stock stencil: bStock (P - 1) of the serial overset (1e-5 400)
+    # instead of vParallel
+    costs.stencil = scalingModel.STOCK
+    stock = scalingModel.predict(costs, scalingModel.Decomposition(
+        table, [1, 1]))["overset"]
+    costs.stencil = scalingModel.OCTREE
+    check("stock overset of 2 ranks",
+          abs(stock - (overset - 2e-3 + 0.1*4e-3)) < 1e-15, str(stock))
     # the work's imbalance at a pose 1.8 (of the mean 200): 360 at a step;
     # 1.2 (240) is below the cycle's largest mean, 300
     peaks = []
@@ -108,25 +128,93 @@ def check_model():
         peaks.append(scalingModel.predict(
             costs, scalingModel.Decomposition(table, [1, 1]))["overset"])
     del table["info"]["oversetWorkAtPose"]
-    check("overset at a pose", abs(peaks[0] - overset - 0.6e-3) < 1e-15
+    check("overset at a pose", abs(peaks[0] - overset - 0.6e-3*s2) < 1e-15
           and abs(peaks[1] - overset) < 1e-15, str(peaks))
     # the busiest rank per sweep: faces + remote donor cells (50 + 30 on
     # rank 1); a report without remoteDonors: NaN.  PIMPLE with the
-    # remote-stencil interfaces (1 rank each): rank 0 1e-3 + 1e-6 (10 (1 +
-    # 1) + 4*2) + 1e-9*2*8 (50 + 8), rank 1 less
+    # remote-stencil interfaces (1 rank each): rank 0 G (1e-6 S 1000 +
+    # 100 1e-5 (1 + 1) + 1e-9 2 8 (50 + 8)), rank 1 less
     without = scalingModel.Decomposition(table, [1, 1]).sweep_values_max()
     table["columns"] += ["remoteDonors", "donorRanks"]
     for row, donors in zip(table["rows"], (8, 30)):
         row["remoteDonors"], row["donorRanks"] = donors, 1
     d = scalingModel.Decomposition(table, [1, 1])
     sweep = d.sweep_values_max()
-    pimple = 1e-3 + 28e-6 + 928e-9
+    pimple = 1.5*(1e-3*s2 + 2e-3 + 928e-9)
     step = scalingModel.predict(costs, d)
     check("sweep values max, PIMPLE with remote donors",
           sweep == 80 and np.isnan(without)
           and abs(step["pimple"] - pimple) < 1e-15,
           "%s, without the column %s; pimple %r" % (sweep, without,
                                                     step["pimple"]))
+    check_rank_report(costs)
+
+
+def check_rank_report(costs):
+    """A solver's oversetRankReport of 2 ranks as a decomposition: the
+    neighbours from procPatches, remote donors from received, recvRanks;
+    its step by hand with the counted iterations (110 of I1 100)."""
+    names = ["cells", "procFaces", "procPatches", "acceptors", "remoteSlots",
+             "received", "recvRanks"]
+    report = {"columns": names, "rows": [
+        dict(zip(names, (600, 40, 1, 10, 12, 5, 1))),
+        dict(zip(names, (500, 40, 1, 20, 30, 9, 1)))], "info": {}}
+    d = scalingModel.Decomposition.from_rank_report(report)
+    costs.traffic = None
+    step = scalingModel.predict(costs, d, iterations=110)
+    # rank 0: 1.1 (1e-6 S 600 + 100 1e-5 2 + 1e-9 2 8 45); overset: 1e-5
+    # S 600 + vParallel (no stencil traffic)
+    s2 = (1.6)**0.5
+    pimple = 1.1*(600e-6*s2 + 2e-3 + 720e-9)
+    overset = 6e-3*s2 + 2e-3
+    check("step of an oversetRankReport", list(d.neighbours) == [1, 1]
+          and list(d.remoteDonors) == [5, 9]
+          and abs(step["pimple"] - pimple) < 1e-15
+          and abs(step["overset"] - overset) < 1e-15
+          and step["slowestRank"] == 0, str(step))
+
+
+# runs of the first 40 s of the coarse archive's session: their PIMPLE is
+# 1.30-1.75x that of the same partition run later with the stock stencil
+# (bitwise the same p solves); the model, which gives both the same PIMPLE,
+# is 19-46 % below them (bench/scaling/results-causes.md)
+EARLY = ("coarse/octree-oversetGraph-np*", "coarse/octree-hierarchical-np2")
+
+
+def check_validate():
+    """The committed model against the committed 16-core archives: stock
+    runs within 30 %, octree runs within 25 % but for EARLY (50 %), the
+    measured slowest method at 16 ranks on coarse (oversetGraph) the
+    model's too, and calibrate on the committed set gives the committed
+    constants (3 %)."""
+    from flapfoam import scalingValidate as sv
+    archives = sorted(glob.glob(os.path.join(HERE, "measured",
+                                             "scaling-16core-*.tar.gz")))
+    if len(archives) < 2:
+        check("validate: the committed archives", False,
+              "found %s" % archives)
+        return
+    runs = sv.read_archives(archives)
+    rows = sv.compare(runs, scalingModel.CALIBRATION)
+    early = [r for r in rows if any(fnmatch.fnmatch(r["run"], p)
+                                    for p in EARLY)]
+    rest = [r for r in rows if r not in early]
+    worst = sv.largest_errors(rest)
+    check("validate: %d runs, stock within 30 %%, octree within 25 %%"
+          % len(rest), len(rest) == 24 and worst["ID"][0] < 0.30
+          and worst["octree"][0] < 0.25, str(worst))
+    check("validate: the %d early runs within 50 %%" % len(early),
+          len(early) == 5 and sv.largest_errors(early)[None][0] < 0.5,
+          str(sv.largest_errors(early)))
+    ranks = sv.ranking(rows, "model")[("coarse", "octree", 16)]
+    check("validate: oversetGraph slowest at 16 ranks on coarse",
+          ranks[-1] == "oversetGraph", str(ranks))
+    cal = sv.calibrate(runs)
+    ref = scalingModel.CALIBRATION
+    diff = {f: abs(getattr(cal, f)/getattr(ref, f) - 1)
+            for f in ("pSat", "cIter", "growth", "vParallel", "bStock")}
+    check("calibrate reproduces the committed constants",
+          max(diff.values()) < 0.03, str(cal))
 
 
 def main():
@@ -135,6 +223,7 @@ def main():
     os.makedirs(sys.argv[1], exist_ok=True)
     check_tables(sys.argv[1])
     check_model()
+    check_validate()
     sys.exit(1 if failed else 0)
 
 

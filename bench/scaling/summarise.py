@@ -186,6 +186,7 @@ def fit_costs(data, stencil, level):
     costs = scalingModel.Costs(data["machine"],
                                pimple.get(level, pimple[None]),
                                data["fits"][stencil])
+    costs.stencil = stencil
     serial = serial_runs(data, stencil)
     t, d = serial.get(level, serial.get(data["timeLevel"]))
     costs.fit_overset([(t["overset"], d.work[0], 0.0)])

@@ -3,8 +3,12 @@
 #     under the GNU General Public License v3 or later (COPYING).
 """
 A model of one time step of the drone cases per rank, from what a
-decomposition gives each rank (counted: rankTables, mpiCounts) and costs
-measured on one machine (bench/scaling).  A model, not a measurement:
+decomposition gives each rank (counted: rankTables, mpiCounts, or the
+solver's oversetRankReport) and costs measured on one machine (the
+level's serial run, the ping-pong), with a few constants calibrated on
+the timed runs of a 16-core machine (Calibration; bench/scaling/
+results-validate.md says which runs fitted them and how far the model is
+from every run).  A model, not a measurement:
 
     step = rbd + overset + max_r pimple_r
 
@@ -12,45 +16,93 @@ measured on one machine (bench/scaling).  A model, not a measurement:
 the two parts are synchronised separately; rbd is serial, the same on
 every rank), with, per rank r of P,
 
-    overset   = cFix + cWork W_peak + max_r (alpha m_r + beta b_r)
-    pimple_r  = cCell N_r + alpha sMsg (k_r + q_r) + beta sBytes 8 (F_r + D_r)
-                + alpha sReduce 2 ceil(log2 P)
+    pimple_r  = G(P) [cCell S(P) N_r + cIter I1 (k_r + q_r)
+                      + beta sBytes 8 (F_r + D_r)]
+    overset   = cFix + cWork S(P) W_peak + vParallel (octree, P > 1)
+                + bStock (P - 1) (cFix + cWork W_total) (stock stencil)
+                + max_r (alpha m_r + beta b_r)
+    S(P)      = sqrt((1 + (P/pSat)^2)/(1 + pSat^-2))
+    G(P)      = 1 + growth log2 P
 
-- N_r cells, F_r processor faces, k_r neighbour ranks, W_r overset work
-  (fringe, donors, hole-cut candidates: couplingReport's oversetWork, a
-  mean over the poses of a cycle); W_peak the busiest rank's at a step:
-  max(max_r W_r, oversetWorkAtPose mean_r W_r), with couplingReport's
-  oversetWorkAtPose the imbalance of the work at a pose (acceptors and
-  donors, a mean over the kept poses; the busiest rank changes with the
-  pose, so this is above the imbalance of the cycle's means; max_r W_r
-  for a report without it); D_r the donor cells on other ranks its
-  acceptors use and q_r the ranks they come from (couplingReport's
-  remoteDonors, donorRanks: v1912's dynamicOversetFvMesh puts them in the
-  matrix as remote-stencil interfaces, exchanged every linear-solver
-  sweep like the processor faces; 0 for a report without them);
-- m_r, b_r: the messages and bytes that the stencil sends per step
-  (motion and stencil only), from the traffic fit (TrafficFit: counted at
-  some (method, P) on one level, fitted against P - 1 and the rank's
-  remote donor-acceptor pairs);
-- sMsg, sBytes, sReduce: halo exchanges per interface (neighbour rank or
-  remote-stencil rank), sweeps by bytes (per face or remote donor) and
-  reductions of one PIMPLE step (counted: a flow run minus a motion run,
-  2 ranks);
+- N_r cells, F_r processor faces, k_r neighbour ranks (processor
+  patches), D_r the donor cells it receives from other ranks and q_r the
+  ranks they come from (v1912's remote-stencil interfaces, exchanged in
+  every linear-solver sweep like the processor faces); W_r overset work
+  (couplingReport's oversetWork, or the cells where only the solver's
+  oversetRankReport is at hand), W_peak the busiest rank's at a step;
 - cCell, cWork: pimple and overset seconds per cell and per unit of
-  overset work of the level's serial run; cFix: overset work that every
-  rank repeats whatever its share (e.g. search-box voxels, the same on
-  every level): 0 where the serial runs of several levels show none;
-  alpha, beta: one message and one byte between two ranks (ping-pong).
+  overset work of the level's serial run; rbd the serial run's; I1 the
+  serial run's pressure iterations per step (its log: 4 PBiCGStab
+  solves); m_r, b_r the stencil's messages and bytes (TrafficFit, where
+  counted); alpha, beta the ping-pong's; sBytes the sweeps per step;
+- S(P): the slowdown of a rank's compute when P ranks share one socket's
+  memory bandwidth (1 at P = 1, ~P/pSat past pSat ranks), on the pimple
+  and the octree's overset work alike;
+- G(P): the pressure iterations per step, I1 G(P) (they grow as the
+  DILU preconditioner acts on smaller blocks);
+- cIter: seconds per interface (neighbour or remote-stencil rank) and
+  pressure iteration: the halo exchanges of the sweeps and the boundary
+  updates, waiting for the neighbour included (per sweep, two an
+  iteration, 28-70x the ping-pong's alpha on the 16-core machine: not a
+  latency, a calibrated cost);
+- vParallel: the octree stencil's voxel exchange (patchVoxelExchange),
+  the same on every level, 0 in serial; bStock: the stock
+  inverseDistance's overset work per extra rank, a share of its serial
+  overset (its search sends every rank's cells to every rank whose box
+  overlaps: the part grows with P).
 
-Assumptions: the work of a rank is proportional to its cells and its
-overset work; halo traffic per step does not depend on the level (the
-same solver settings); one message costs alpha + bytes beta whatever the
-ranks (no contention: a lower bound on a network); no I/O.
+Assumptions: one rank per core on one socket (S(P) says nothing of two
+sockets or of nodes); the work of a rank is proportional to its cells
+and its overset work; halo bytes cost beta (they are negligible beside
+cIter); no I/O.  What it cannot see: run-to-run changes of the machine
+(the same partition's PIMPLE, bitwise the same arithmetic, measured
+0.74-1.75x apart in two runs on the 16-core machine), and the cell order
+of a rank's matrix.
 """
 
+import dataclasses
 import math
 
 import numpy as np
+
+STOCK = "inverseDistance"
+OCTREE = "octreeInverseDistance"
+
+
+@dataclasses.dataclass(frozen=True)
+class Calibration:
+    """The constants fitted to timed runs (see the module's docstring):
+    pSat [ranks], cIter [s per interface and pressure iteration], growth
+    [pressure iterations per doubling of the ranks, a share of the serial
+    run's], vParallel [s], bStock [a share of the serial overset per extra
+    rank], iterations (I1 where a level's serial iterations are unknown)."""
+    pSat: float
+    cIter: float
+    growth: float
+    vParallel: float
+    bStock: float
+    iterations: float = 91.2
+
+
+# Fitted by flapfoam.scalingValidate.calibrate on CALIBRATION_RUNS of
+# bench/scaling/measured/scaling-16core-*.tar.gz (16-core Xeon, one
+# socket); the other runs of those archives are held out
+# (bench/scaling/results-validate.md).
+CALIBRATION = Calibration(pSat=14.7, cIter=2.51e-05, growth=0.0615,
+                          vParallel=0.0256, bStock=0.0954)
+CALIBRATION_RUNS = ("coarse/*-hierarchical-*", "coarse/*-scotch-*",
+                    "medium/octree-hierarchical-np16")
+
+
+def slowdown(ranks, p_sat):
+    """S(P): a rank's compute time relative to serial when P ranks share
+    the socket's memory bandwidth."""
+    return math.sqrt((1 + (ranks/p_sat)**2)/(1 + p_sat**-2))
+
+
+def iteration_growth(ranks, growth):
+    """G(P): pressure iterations per step relative to serial."""
+    return 1 + growth*math.log2(ranks)
 
 
 def least_squares(rows, values):
@@ -91,13 +143,25 @@ class TrafficFit:
 class Costs:
     """The measured costs of one stencil (seconds): cCell, cFix, cWork,
     rbd, and the machine's alpha, beta; the PIMPLE traffic per step
-    (sMsg, sBytes, sReduce) and the stencil's TrafficFit."""
+    (sMsg, sBytes, sReduce: counted; sBytes enters the model) and the
+    stencil's TrafficFit (None: no stencil traffic counted); stencil
+    (STOCK or OCTREE), iterations (I1, None: unknown) and the
+    Calibration."""
 
-    def __init__(self, machine, pimple_traffic, traffic):
+    def __init__(self, machine, pimple_traffic, traffic,
+                 calibration=CALIBRATION):
         self.alpha, self.beta = machine
         self.sMsg, self.sBytes, self.sReduce = pimple_traffic
         self.traffic = traffic
+        self.calibration = calibration
+        self.stencil = OCTREE
+        self.iterations = None
         self.cCell = self.cFix = self.cWork = self.rbd = 0.0
+
+    def serial_iterations(self):
+        """I1: the level's serial pressure iterations per step (the
+        calibration's where unknown)."""
+        return self.iterations or self.calibration.iterations
 
     def fit_overset(self, runs):
         """cFix, cWork from runs [(overset seconds, max_r W_r, modelled
@@ -138,6 +202,21 @@ class Decomposition:
         self.neighbours = np.asarray(neighbours, float)
         self.info = table["info"]
 
+    @classmethod
+    def from_rank_report(cls, report):
+        """The decomposition of a solver's oversetRankReport table
+        (rankTables.read_table): cells, procFaces, procPatches (the
+        neighbours), received and recvRanks (remote donor cells and
+        their ranks), acceptors, remoteSlots (the remote pairs); the
+        overset work taken as the cells (the report counts no work)."""
+        rows = [{"cells": r["cells"], "processorFaces": r["procFaces"],
+                 "oversetWork": r["cells"], "remotePairs": r["remoteSlots"],
+                 "acceptors": r["acceptors"], "pairs": r["acceptors"],
+                 "remoteDonors": r["received"], "donorRanks": r["recvRanks"]}
+                for r in report["rows"]]
+        table = {"columns": list(rows[0]), "rows": rows, "info": {}}
+        return cls(table, [r["procPatches"] for r in report["rows"]])
+
     def work_peak(self):
         """The busiest rank's overset work at a step: the work's
         imbalance at a pose (oversetWorkAtPose) times its mean, at least
@@ -171,30 +250,56 @@ class Decomposition:
 
 
 def stencil_comm(costs, d):
-    """Per rank: seconds of the stencil's messages per step."""
+    """Per rank: seconds of the stencil's messages per step (0 without a
+    TrafficFit)."""
     out = []
     for pairs in d.pairs:
-        b, m = costs.traffic.predict(d.ranks, pairs) if d.ranks > 1 \
-            else (0.0, 0.0)
+        b, m = costs.traffic.predict(d.ranks, pairs) \
+            if d.ranks > 1 and costs.traffic is not None else (0.0, 0.0)
         out.append(costs.alpha*m + costs.beta*b)
     return np.array(out)
 
 
-def predict(costs, d):
+def pimple_ranks(costs, d, iterations=None):
+    """Per rank: (pimple seconds, its halo part) of a step.  ITERATIONS:
+    the pressure iterations per step where known (a measured run's), else
+    I1 G(P)."""
+    cal = costs.calibration
+    i1 = costs.serial_iterations()
+    grow = iterations/i1 if iterations else \
+        iteration_growth(d.ranks, cal.growth)
+    interfaces = d.neighbours + d.donorRanks
+    halo = grow*(i1*cal.cIter*interfaces
+                 + costs.beta*costs.sBytes*8*(d.faces + d.remoteDonors))
+    work = grow*costs.cCell*slowdown(d.ranks, cal.pSat)*d.cells
+    return work + halo, halo
+
+
+def overset_work(costs, d):
+    """Seconds of the overset work of a step (no messages): the busiest
+    rank's, slowed by the shared bandwidth, plus the stencil's parallel
+    part."""
+    cal = costs.calibration
+    t = costs.cFix + costs.cWork*slowdown(d.ranks, cal.pSat)*d.work_peak()
+    if d.ranks > 1 and costs.stencil == STOCK:
+        t += cal.bStock*(d.ranks - 1)*(costs.cFix
+                                       + costs.cWork*float(d.work.sum()))
+    elif d.ranks > 1:
+        t += cal.vParallel
+    return t
+
+
+def predict(costs, d, iterations=None):
     """The model's step of decomposition d: dict rbd, overset, pimple,
     total (seconds), oversetComm (the most of any rank) and pimpleComm
-    (of the slowest rank)."""
+    (the halo of the slowest rank).  ITERATIONS: see pimple_ranks."""
     comm = stencil_comm(costs, d)
-    reduce = 2*math.ceil(math.log2(d.ranks)) if d.ranks > 1 else 0
-    halo = costs.alpha*(costs.sMsg*(d.neighbours + d.donorRanks)
-                        + costs.sReduce*reduce) \
-        + costs.beta*costs.sBytes*8*(d.faces + d.remoteDonors)
-    pimple = costs.cCell*d.cells + halo
+    pimple, halo = pimple_ranks(costs, d, iterations)
     p = int(np.argmax(pimple))
     step = {"rbd": costs.rbd, "oversetComm": float(comm.max()),
-            "pimple": float(pimple[p]), "pimpleComm": float(halo[p])}
-    step["overset"] = costs.cFix + costs.cWork*d.work_peak() \
-        + step["oversetComm"]
+            "pimple": float(pimple[p]), "pimpleComm": float(halo[p]),
+            "slowestRank": p}
+    step["overset"] = overset_work(costs, d) + step["oversetComm"]
     step["total"] = step["rbd"] + step["overset"] + step["pimple"]
     return step
 
