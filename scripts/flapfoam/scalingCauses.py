@@ -9,7 +9,8 @@ the measured gap split cause by cause with the calibrated model
 For a run A against a reference B (the same level, stencil and ranks),
 the model's PIMPLE of the slowest rank,
 
-    pimple = (I/I1) [cCell S(P) N + cIter I1 (k + q) + beta sBytes 8 (F + D)]
+    pimple = (I/I1) [cCell B(N, Ntotal) + cIter I1 (k + q)
+                     + beta sBytes 8 (F + D)]
 
 goes from B's inputs to A's one at a time, in this order: cells N (the
 slowest rank's: imbalance included), pressure iterations I (counted in
@@ -40,14 +41,14 @@ def slowest_inputs(run, step):
             float(d.faces[r] + d.remoteDonors[r])]
 
 
-def rank_pimple(costs, ranks, x):
-    """The model's PIMPLE of one rank of RANKS with inputs X (see
-    slowest_inputs)."""
+def rank_pimple(costs, total, x):
+    """The model's PIMPLE of one rank of a decomposition of TOTAL cells
+    with inputs X (see slowest_inputs)."""
     cal = costs.calibration
     i1 = costs.serial_iterations()
     cells, iterations, interfaces, values = x
     return iterations/i1*(
-        costs.cCell*scalingModel.slowdown(ranks, cal.pSat)*cells
+        costs.cCell*scalingModel.shared_bandwidth(cells, total, cal.pSat)
         + i1*cal.cIter*interfaces
         + costs.beta*costs.sBytes*8*values)
 
@@ -60,10 +61,11 @@ def attribute(a, b, costs):
     x = slowest_inputs(b, scalingModel.predict(costs, b.decomposition,
                                                b.iterations))
     out = {}
+    total = float(a.decomposition.cells.sum())
     for i, cause in enumerate(CAUSES):
-        before = rank_pimple(costs, a.ranks, x)
+        before = rank_pimple(costs, total, x)
         x[i] = xa[i]
-        out[cause] = rank_pimple(costs, a.ranks, x) - before
+        out[cause] = rank_pimple(costs, total, x) - before
     return out
 
 
@@ -72,25 +74,28 @@ def gaps(runs, cal):
     level, stencil and ranks with the smallest measured PIMPLE: run,
     reference, measured gap, the causes' seconds, unexplained, the
     measured gap of pimpleOversetInterpolate and the twins' gap."""
-    serial = {(r.level, r.stencil): r for r in runs if r.ranks == 1}
-    by = {(r.level, r.stencil, r.method, r.ranks): r for r in runs}
+    serial = {r.group: r for r in runs if r.ranks == 1}
+    by = {(r.session, r.level, r.stencil, r.method, r.ranks): r
+          for r in runs}
     rows = []
     for a in runs:
         group = [r for r in runs if r.ranks == a.ranks > 1
-                 and (r.level, r.stencil) == (a.level, a.stencil)]
-        if not group or (a.level, a.stencil) not in serial:
+                 and r.group == a.group]
+        if not group or a.group not in serial:
             continue
         b = min(group, key=lambda r: r.measured["pimple"])
-        costs = scalingValidate.serial_costs(serial[(a.level, a.stencil)],
-                                             cal)
-        row = {"run": a.name, "reference": b.method, "ranks": a.ranks,
+        costs = scalingValidate.serial_costs(serial[a.group], cal)
+        row = {"run": a.name, "method": a.method, "reference": b.method,
+               "ranks": a.ranks,
                "gap": a.measured["pimple"] - b.measured["pimple"],
                "interpolate": a.measured["pimpleOversetInterpolate"]
                - b.measured["pimpleOversetInterpolate"]}
         row.update(attribute(a, b, costs))
         row["unexplained"] = row["gap"] - sum(row[c] for c in CAUSES)
-        ta = by.get((a.level, TWIN[a.stencil], a.method, a.ranks))
-        tb = by.get((a.level, TWIN[a.stencil], b.method, a.ranks))
+        ta = by.get((a.session, a.level, TWIN[a.stencil], a.method,
+                     a.ranks))
+        tb = by.get((a.session, a.level, TWIN[a.stencil], b.method,
+                     a.ranks))
         row["twinGap"] = ta.measured["pimple"] - tb.measured["pimple"] \
             if ta and tb else float("nan")
         rows.append(row)
@@ -101,13 +106,15 @@ def feature_rows(runs):
     """Per parallel run: the measured PIMPLE and its twin's, pressure
     iterations, and per rank (max; cells also max/mean): cells, faces,
     neighbours, remote donors received, their ranks, halo bytes."""
-    by = {(r.level, r.stencil, r.method, r.ranks): r for r in runs}
+    by = {(r.session, r.level, r.stencil, r.method, r.ranks): r
+          for r in runs}
     out = []
     for r in runs:
         if r.ranks < 2:
             continue
         d = r.decomposition
-        twin = by.get((r.level, TWIN[r.stencil], r.method, r.ranks))
+        twin = by.get((r.session, r.level, TWIN[r.stencil], r.method,
+                       r.ranks))
         out.append("| %s | %.3f | %s | %.3f | %.1f | %d (%.3f) | %d | %d | "
                    "%d | %d | %d |" % (
                        r.name, r.measured["pimple"],
@@ -133,7 +140,7 @@ def report(runs, cal):
         + " | unexplained | of it pimpleOversetInterpolate | twin gap |",
         "|---|---|" + "---:|"*(len(CAUSES) + 4)]
     for row in gaps(runs, cal):
-        if row["reference"] == row["run"].split("-")[1]:
+        if row["reference"] == row["method"]:
             continue
         lines.append("| %s | %s | %.3f | %s | %.3f | %.3f | %s |" % (
             row["run"], row["reference"], row["gap"],

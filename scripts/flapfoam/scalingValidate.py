@@ -3,23 +3,28 @@
 #     under the GNU General Public License v3 or later (COPYING).
 """
 The scaling model (flapfoam.scalingModel) against timed runs: read the
-archives of bench/scaling/measured (scaling-16core-<level>.tar.gz, or a
-folder with runs.tsv, pingPong.log and runs/<stencil>-<method>-np<N>/),
-calibrate the model's constants on some of the runs, compare its step
-with every run's, and the causes of one partition's PIMPLE against
-another's (flapfoam.scalingCauses).  numpy; scipy for calibrate.
+archives of bench/scaling/measured (a .tar.gz of one level or several, or
+a folder with runs.tsv, pingPong.log and runs/<stencil>-<method>-np<N>/,
+or one holding such level folders), the medians over other rounds of a
+session (runTimed logs, summary.txt: flapfoam.timedRounds) in place of
+one round's, calibrate the model's constants on some of the runs,
+compare its step with every run's, and the causes of one partition's
+PIMPLE against another's (flapfoam.scalingCauses).  numpy; scipy for
+calibrate.
 
 A run's measured step: rbd + overset + pimple of the step timers (max
 over ranks), the median over the steps after the start-up ones (runs.tsv);
 its pressure iterations: the PBiCGStab solves of p per step in its log,
 the mean over the same steps; its ranks: the solver's oversetRankReport.
-The model's inputs: that report, the level's serial run of the same
-stencil (cCell, cWork, rbd, serial iterations) and the ping-pong.
+The model's inputs: that report, the serial run of the same session
+(archive), level and stencil (cCell, cWork, rbd, serial iterations) and
+the ping-pong.
 """
 
 import dataclasses
 import fnmatch
 import glob
+import io
 import math
 import os
 import re
@@ -28,9 +33,10 @@ import tempfile
 
 import numpy as np
 
-from flapfoam import rankTables, scalingModel, stepTimers
+from flapfoam import rankTables, scalingModel, stepTimers, timedRounds
 
 STENCILS = {"octree": scalingModel.OCTREE, "ID": scalingModel.STOCK}
+LEVELS = ("coarse", "medium", "fine")
 PARTS = ("rbd", "overset", "pimple", "pimpleOversetInterpolate",
          "oversetStencilVoxels")
 
@@ -39,8 +45,9 @@ PARTS = ("rbd", "overset", "pimple", "pimpleOversetInterpolate",
 class Run:
     """One timed run: level, stencil (short: octree, ID), method, ranks,
     measured (medians of PARTS and "step"), iterations (pressure, per
-    step), decomposition (scalingModel.Decomposition) and machine
-    (alpha, beta)."""
+    step), decomposition (scalingModel.Decomposition), machine (alpha,
+    beta), session (the archive's label) and rounds (how many rounds the
+    measured medians are over)."""
     level: str
     stencil: str
     method: str
@@ -49,16 +56,36 @@ class Run:
     iterations: float
     decomposition: scalingModel.Decomposition
     machine: tuple
+    session: str = ""
+    rounds: int = 1
 
     @property
-    def name(self):
+    def short(self):
+        """level/stencil-method-npN (what calibration patterns match)."""
         return "%s/%s-%s-np%d" % (self.level, self.stencil, self.method,
                                   self.ranks)
 
+    @property
+    def name(self):
+        """session:level/stencil-method-npN (unique over sessions)."""
+        return "%s:%s" % (self.session, self.short)
 
-def archive_root(path, scratch):
-    """The folder of an archive (a .tar.gz, unpacked under SCRATCH, or a
-    folder) that holds runs.tsv."""
+    @property
+    def group(self):
+        """(session, level, stencil): the runs that share a serial run."""
+        return (self.session, self.level, self.stencil)
+
+
+def matches(run, patterns):
+    """Whether RUN's name or short name matches a pattern (fnmatch)."""
+    return any(fnmatch.fnmatch(run.short, p) or fnmatch.fnmatch(run.name, p)
+               for p in patterns)
+
+
+def archive_roots(path, scratch):
+    """The level folders (those holding runs.tsv, outside runs/) of an
+    archive: a .tar.gz (unpacked under SCRATCH) or a folder, with one
+    level or several (t3/coarse, t3/medium)."""
     if os.path.isfile(path):
         out = os.path.join(scratch, os.path.basename(path).split(".")[0])
         with tarfile.open(path) as tar:
@@ -67,11 +94,27 @@ def archive_root(path, scratch):
             else:
                 tar.extractall(out)
         path = out
-    found = sorted(glob.glob(os.path.join(path, "**", "runs.tsv"),
-                             recursive=True), key=len)
-    if not found:
+    found = sorted(os.path.dirname(f) for f in glob.glob(
+        os.path.join(path, "**", "runs.tsv"), recursive=True))
+    roots = [f for f in found if not any(
+        f.startswith(os.path.join(g, "runs") + os.sep) for g in found)]
+    if not roots:
         raise ValueError("%s: no runs.tsv" % path)
-    return os.path.dirname(found[0])
+    return roots
+
+
+def session_label(path):
+    """A short label of an archive: its file name less .tar.gz and a
+    trailing -<level>, or the folder's name (a level folder's parent's)."""
+    path = os.path.abspath(path)
+    if os.path.isfile(path):
+        name = os.path.basename(path).split(".")[0]
+        return re.sub(r"-(%s)$" % "|".join(LEVELS), "", name)
+    name = os.path.basename(path)
+    if os.path.isfile(os.path.join(path, "runs.tsv")) \
+            and name in LEVELS:
+        return os.path.basename(os.path.dirname(path))
+    return re.sub(r"-(%s)$" % "|".join(LEVELS), "", name)
 
 
 def read_level(root):
@@ -143,13 +186,11 @@ def read_rows(root):
     return groups
 
 
-def read_runs(path, scratch, startup=3, renumbered=False):
-    """The runs of one archive (a .tar.gz or a folder), in runs.tsv's
-    order, one per configuration: the medians over its rounds (the
-    pressure iterations: their mean); those that did not end are left out;
-    RENUMBERED: the renumbered runs (runTimed -renumber yes) instead of
-    the plain ones."""
-    root = archive_root(path, scratch)
+def read_level_runs(root, session, startup=3, renumbered=False):
+    """The runs of one level folder, in runs.tsv's order, one per
+    configuration: the medians over its rounds (the pressure iterations:
+    their mean); those that did not end are left out; RENUMBERED: the
+    renumbered runs (runTimed -renumber yes) instead of the plain ones."""
     level = read_level(root)
     machine = read_ping_pong(os.path.join(root, "pingPong.log"))
     runs = []
@@ -170,15 +211,87 @@ def read_runs(path, scratch, startup=3, renumbered=False):
                            for log, k in zip(logs, skip)])),
             scalingModel.Decomposition.from_rank_report(
                 rankTables.read_table(logs[0], "oversetRankReport")),
-            machine))
+            machine, session, len(rounds)))
     return runs
 
 
-def read_archives(paths, startup=3):
+def read_runs(path, scratch, startup=3, renumbered=False):
+    """The runs of every level folder of one archive (a .tar.gz or a
+    folder), labelled with session_label(PATH); see read_level_runs."""
+    return [r for root in archive_roots(path, scratch)
+            for r in read_level_runs(root, session_label(path), startup,
+                                     renumbered)]
+
+
+def own_rounds(path, scratch):
+    """[(text of summary.txt or "", level, ping-pong log's text)] of every
+    level folder of an archive: each summary is one round of its runs,
+    the ping-pong the session's fingerprint."""
+    out = []
+    for root in archive_roots(path, scratch):
+        texts = []
+        for name in ("summary.txt", "pingPong.log"):
+            fname = os.path.join(root, name)
+            with open(fname) if os.path.isfile(fname) else \
+                    io.StringIO("") as f:
+                texts.append(f.read())
+        out.append((texts[0], read_level(root), texts[1]))
+    return out
+
+
+def rounds_of(tables, files, level_names=("coarse", "medium")):
+    """{(level, stencil, method, ranks): (medians of step, rbd, overset,
+    pimple over the rounds, rounds)} of TABLES [(summary text, level)]
+    and FILES (runTimed logs, their tables in the order of LEVEL_NAMES, or
+    summary.txt; flapfoam.timedRounds), every text counted once."""
+    texts = {}
+    for text, level in tables:
+        texts.setdefault(text, timedRounds.read_tables(text, [level]))
+    for fname in files:
+        with open(fname) as f:
+            text = f.read()
+        if text not in texts:
+            texts[text] = timedRounds.read_file(fname, list(level_names))
+    timed = [t for found in texts.values() for t in found]
+    return {k[:4]: v for k, v in timedRounds.medians(
+        [t for t in timed if not t.renumbered]).items()}
+
+
+def apply_rounds(runs, table):
+    """RUNS with the measured step, rbd, overset and pimple of the
+    configurations in TABLE (rounds_of) replaced by its medians over the
+    rounds, and their rounds count; the rest of each run (its rank
+    report, iterations, the other parts) kept."""
+    out = []
+    for r in runs:
+        found = table.get((r.level, r.stencil, r.method, r.ranks))
+        if found:
+            parts, count = found
+            r = dataclasses.replace(r, measured=dict(r.measured, **parts),
+                                    rounds=count)
+        out.append(r)
+    return out
+
+
+def read_archives(paths, startup=3, rounds=(), level_names=("coarse",
+                                                            "medium")):
     """The runs of every archive (unpacked in a scratch folder that is
-    removed afterwards)."""
+    removed afterwards).  ROUNDS: runTimed logs or summary.txt files of
+    other rounds of the session of the last archive in PATHS; they apply
+    to the archives with that one's ping-pong (one session's level
+    folders share it), whose own summary.txt count as one round each."""
     with tempfile.TemporaryDirectory(prefix="flapfoam-validate-") as tmp:
-        return [r for p in paths for r in read_runs(p, tmp, startup)]
+        runs = [read_runs(p, tmp, startup) for p in paths]
+        if not rounds:
+            return [r for group in runs for r in group]
+        own = [own_rounds(p, tmp) for p in paths]
+        pings = {o[2] for o in own[-1]}
+        session = [k for k, o in enumerate(own) if {x[2] for x in o} <= pings]
+        table = rounds_of([x[:2] for k in session for x in own[k] if x[0]],
+                          rounds, level_names)
+        return [r for k, group in enumerate(runs)
+                for r in (apply_rounds(group, table) if k in session
+                          else group)]
 
 
 def serial_costs(serial, cal):
@@ -196,14 +309,14 @@ def serial_costs(serial, cal):
 
 def model_steps(runs, cal, measured_iterations=False):
     """{run name: the model's step} of every run with a serial run of its
-    level and stencil among RUNS (ITERATIONS: the run's own counts rather
-    than the model's G(P))."""
-    serial = {(r.level, r.stencil): r for r in runs if r.ranks == 1}
+    session, level and stencil among RUNS (ITERATIONS: the run's own
+    counts rather than the model's G(P))."""
+    serial = {r.group: r for r in runs if r.ranks == 1}
     out = {}
     for r in runs:
-        if (r.level, r.stencil) not in serial:
+        if r.group not in serial:
             continue
-        costs = serial_costs(serial[(r.level, r.stencil)], cal)
+        costs = serial_costs(serial[r.group], cal)
         out[r.name] = scalingModel.predict(
             costs, r.decomposition,
             r.iterations if measured_iterations else None)
@@ -213,20 +326,17 @@ def model_steps(runs, cal, measured_iterations=False):
 def select(runs, patterns):
     """The runs whose name (level/stencil-method-npN) matches a pattern
     (fnmatch), with the serial runs they need."""
-    chosen = [r for r in runs
-              if r.ranks > 1 and any(fnmatch.fnmatch(r.name, p)
-                                     for p in patterns)]
-    keys = {(r.level, r.stencil) for r in chosen}
-    return [r for r in runs if r.ranks == 1
-            and (r.level, r.stencil) in keys] + chosen
+    chosen = [r for r in runs if r.ranks > 1 and matches(r, patterns)]
+    keys = {r.group for r in chosen}
+    return [r for r in runs if r.ranks == 1 and r.group in keys] + chosen
 
 
 def fit_growth(runs):
     """growth: least squares of I/I1 - 1 = growth log2 P over the parallel
     runs (their serial run's I1)."""
-    i1 = {(r.level, r.stencil): r.iterations for r in runs if r.ranks == 1}
+    i1 = {r.group: r.iterations for r in runs if r.ranks == 1}
     x = np.array([math.log2(r.ranks) for r in runs if r.ranks > 1])
-    y = np.array([r.iterations/i1[(r.level, r.stencil)] - 1
+    y = np.array([r.iterations/i1[r.group] - 1
                   for r in runs if r.ranks > 1])
     return float(x @ y/(x @ x))
 
@@ -236,6 +346,11 @@ def _log_fit(residual, start, bounds):
     return least_squares(residual, start, bounds=bounds).x
 
 
+# where calibrate's least squares start
+START = scalingModel.Calibration(pSat=14.0, cIter=2e-5, growth=0.06,
+                                 vParallel=0.025, bStock=0.1)
+
+
 def calibrate(runs, patterns=scalingModel.CALIBRATION_RUNS):
     """The Calibration fitted to the runs matching PATTERNS: growth to
     their pressure iterations; pSat and cIter to their PIMPLE (with their
@@ -243,7 +358,7 @@ def calibrate(runs, patterns=scalingModel.CALIBRATION_RUNS):
     (log-ratio least squares)."""
     fit = select(runs, patterns)
     par = [r for r in fit if r.ranks > 1]
-    base = scalingModel.CALIBRATION
+    base = START
 
     def cal_of(x):
         return dataclasses.replace(base, pSat=x[0], cIter=x[1],
@@ -272,8 +387,8 @@ def rounded(cal):
 
 
 def compare(runs, cal, patterns=(), measured_iterations=False):
-    """Rows (dict) of every parallel run with a model step: run, level,
-    stencil, method, ranks, measured, model (steps, s), ratio,
+    """Rows (dict) of every parallel run with a model step: run, session,
+    level, stencil, method, ranks, rounds, measured, model (steps, s), ratio,
     calibrated (whether it matched PATTERNS), and the parts."""
     steps = model_steps(runs, cal, measured_iterations)
     rows = []
@@ -282,67 +397,116 @@ def compare(runs, cal, patterns=(), measured_iterations=False):
             continue
         m = steps[r.name]
         rows.append({
-            "run": r.name, "level": r.level, "stencil": r.stencil,
-            "method": r.method, "ranks": r.ranks,
+            "run": r.name, "session": r.session, "level": r.level,
+            "stencil": r.stencil, "method": r.method, "ranks": r.ranks,
+            "rounds": r.rounds,
             "measured": r.measured["step"], "model": m["total"],
             "ratio": m["total"]/r.measured["step"],
             "overset": (r.measured["overset"], m["overset"]),
             "pimple": (r.measured["pimple"], m["pimple"]),
-            "calibrated": any(fnmatch.fnmatch(r.name, p) for p in patterns)})
+            "calibrated": matches(r, patterns)})
     return rows
 
 
-def largest_errors(rows):
-    """{stencil: (largest |model/measured - 1|, its run)} and the same
-    over all rows under the key None."""
+def largest_errors(rows, key=lambda r: r["stencil"]):
+    """{KEY of a row (default: its stencil): (largest |model/measured -
+    1|, its run)} and the same over all rows under the key None."""
     out = {}
-    for key in sorted({r["stencil"] for r in rows}) + [None]:
-        sub = [r for r in rows if key is None or r["stencil"] == key]
+    for k in sorted({key(r) for r in rows}) + [None]:
+        sub = [r for r in rows if k is None or key(r) == k]
         worst = max(sub, key=lambda r: abs(r["ratio"] - 1))
-        out[key] = (abs(worst["ratio"] - 1), worst["run"])
+        out[k] = (abs(worst["ratio"] - 1), worst["run"])
     return out
 
 
 def ranking(rows, by):
-    """{(level, stencil, ranks): methods from fastest to slowest} by the
-    rows' BY ("measured" or "model"), where two methods or more ran."""
+    """{(session, level, stencil, ranks): methods from fastest to
+    slowest} by the rows' BY ("measured" or "model"), where two methods
+    or more ran."""
     groups = {}
     for r in rows:
-        groups.setdefault((r["level"], r["stencil"], r["ranks"]),
-                          []).append(r)
+        groups.setdefault((r["session"], r["level"], r["stencil"],
+                           r["ranks"]), []).append(r)
     return {k: [r["method"] for r in sorted(g, key=lambda r: r[by])]
             for k, g in groups.items() if len(g) > 1}
 
 
-def table(rows, markdown=False):
-    """Lines of the comparison: one per run, then the largest errors per
-    stencil, the rankings and the last line 'model within X % of N
-    measured runs'."""
-    head = ("level", "stencil", "method", "np", "measured [s]", "model [s]",
-            "model/measured", "overset meas/model", "pimple meas/model",
-            "fit")
+# the round-to-round spread of one configuration on the 16-core machine
+# (median max/min of three rounds: 1.15): pairs of methods measured
+# closer than that cannot be ranked
+SPREAD = 0.15
+
+
+def ranked_pairs(rows, spread=SPREAD):
+    """[(run a, run b, measured b/a, whether the model orders them as
+    measured, session)] of the pairs of methods at the same session,
+    level, stencil and ranks whose measured steps differ by more than
+    SPREAD (a the faster)."""
+    keys = ("session", "level", "stencil", "ranks")
+    out = []
+    for i, x in enumerate(rows):
+        for y in rows[i + 1:]:
+            if [x[k] for k in keys] != [y[k] for k in keys]:
+                continue
+            a, b = sorted((x, y), key=lambda r: r["measured"])
+            ratio = b["measured"]/a["measured"]
+            if ratio > 1 + spread:
+                out.append((a["run"], b["run"], ratio,
+                            a["model"] < b["model"], a["session"]))
+    return out
+
+
+def table_lines(rows, markdown=False):
+    """One line per run (and a markdown table's head)."""
+    head = ("session", "level", "stencil", "method", "np", "rounds",
+            "measured [s]", "model [s]", "model/measured",
+            "overset meas/model", "pimple meas/model", "fit")
     fmt = "| " + " | ".join(["%s"]*len(head)) + " |" if markdown else \
-        "%-7s %-7s %-13s %3s %13s %10s %15s %19s %18s %4s"
+        "%-15s %-6s %-6s %-12s %2s %6s %12s %9s %14s %17s %17s %4s"
     lines = [fmt % head]
     if markdown:
-        lines.append("|---|---|---|---:|---:|---:|---:|---:|---:|---|")
+        lines.append("|---|---|---|---|---:|---:|---:|---:|---:|---:|---:"
+                     "|---|")
     for r in rows:
         lines.append(fmt % (
-            r["level"], r["stencil"], r["method"], r["ranks"],
-            "%.3f" % r["measured"], "%.3f" % r["model"],
+            r["session"], r["level"], r["stencil"], r["method"], r["ranks"],
+            r["rounds"], "%.3f" % r["measured"], "%.3f" % r["model"],
             "%.2f (%+.0f %%)" % (r["ratio"], 100*(r["ratio"] - 1)),
             "%.3f / %.3f" % r["overset"], "%.3f / %.3f" % r["pimple"],
             "cal" if r["calibrated"] else "held"))
-    worst = largest_errors(rows)
-    lines.append("")
-    for key in sorted(k for k in worst if k is not None):
-        lines.append("largest error %s: %.0f %% (%s)" % (
-            key, 100*worst[key][0], worst[key][1]))
+    return lines
+
+
+def table(rows, markdown=False):
+    """Lines of the comparison: one per run, then the largest errors per
+    session and stencil (fitted and held out), the rankings, the pairs
+    measured further apart than the spread and the last line 'model
+    within X % of N measured runs'."""
+    lines = table_lines(rows, markdown) + [""]
+    for fit in (True, False):
+        sub = [r for r in rows if r["calibrated"] == fit]
+        worst = largest_errors(sub, lambda r: (r["session"], r["stencil"])) \
+            if sub else {}
+        for k in sorted(k for k in worst if k is not None):
+            lines.append("largest error %s %s %s: %.0f %% (%s)" % (
+                "fitted" if fit else "held out", k[0], k[1],
+                100*worst[k][0], worst[k][1]))
     measured, model = ranking(rows, "measured"), ranking(rows, "model")
     for k in sorted(measured):
-        lines.append("ranking %s %s np %d: measured %s, model %s%s" % (
+        lines.append("ranking %s %s %s np %d: measured %s, model %s%s" % (
             k + (" < ".join(measured[k]), " < ".join(model[k]),
                  "" if measured[k] == model[k] else "  (differs)")))
+    pairs = ranked_pairs(rows)
+    for a, b, ratio, ok, _s in pairs:
+        if not ok:
+            lines.append("pair ranked otherwise: %s < %s (measured %.2fx)"
+                         % (a, b, ratio))
+    for session in sorted({p[4] for p in pairs}) + [None]:
+        sub = [p for p in pairs if session in (None, p[4])]
+        lines.append("pairs measured more than %.0f %% apart%s: %d of %d "
+                     "ranked as measured" % (
+                         100*SPREAD, " in " + session if session else "",
+                         sum(p[3] for p in sub), len(sub)))
     lines.append("model within %.0f %% of %d measured runs"
-                 % (100*worst[None][0], len(rows)))
+                 % (100*largest_errors(rows)[None][0], len(rows)))
     return lines
