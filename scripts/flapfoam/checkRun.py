@@ -20,7 +20,10 @@ non-zero on failure.
         pimple against total, as 1 - mean(rbd + overset + pimple)/mean(total)
         over the steps after the first nStartup of each file (PASS if below
         tol), and the largest per-step |total - sum|/total (reported: on
-        shared cores one step can be descheduled between two timers).
+        shared cores one step can be descheduled between two timers); the
+        PIMPLE parts of timedOversetFvMesh (SOLVE_PARTS and
+        pimpleOversetInterpolate) present, a pressure solve in every step,
+        and their sum within pimple at every step (they lie inside it).
 
     checkRun.py compare A B [--columns q_0,qDot_0,...] [--tol 1e-6]
                             [--rows last|all] [--state]
@@ -143,6 +146,24 @@ def checkPrescribed(args):
                      eTable[0], eTable[1], eTable[2], args.tolTable))
 
 
+SOLVE_PARTS = ("pimplePressureSolve", "pimpleMomentumSolve",
+               "pimpleOtherSolve")
+
+
+def pimple_parts(rows):
+    """(pressure solve share of pimple, whether every step has a pressure
+    solve and its pimple* parts within pimple) of stepTimers rows; None
+    where a part is missing."""
+    names = SOLVE_PARTS + ("pimpleOversetInterpolate",)
+    if not rows or any(n not in rows[0] for n in names):
+        return None
+    inside = all(sum(r[n] for n in names) <= r["pimple"]*(1 + 1e-9)
+                 and r["pimplePressureSolve"] > 0 for r in rows)
+    share = np.mean([r["pimplePressureSolve"] for r in rows]) \
+        / np.mean([r["pimple"] for r in rows])
+    return share, inside
+
+
 def checkTimers(args):
     files = stepTimers.find_files(os.path.join(args.case, "postProcessing",
                                         "stepTimers"))
@@ -159,14 +180,20 @@ def checkTimers(args):
     perStep = np.abs(total - parts)/total
     share = {k: np.mean([r[k] for r in rows])/total.mean()
              for k in ("rbd", "overset", "pimple")}
-    return report(closureMean <= args.tol, args.name or "timers",
+    solves = pimple_parts(rows)
+    return report(closureMean <= args.tol and solves is not None
+                  and solves[1], args.name or "timers",
                   "%d steps: |1 - mean(rbd+overset+pimple)/mean(total)| = "
                   "%.2f %% (tol %g %%), per-step max %.2f %%; mean total "
                   "%.3g s/step, shares rbd %.2f %% overset %.1f %% pimple "
-                  "%.1f %%"
+                  "%.1f %%; %s"
                   % (len(rows), 100*closureMean, 100*args.tol,
                      100*perStep.max(), total.mean(), 100*share["rbd"],
-                     100*share["overset"], 100*share["pimple"]))
+                     100*share["overset"], 100*share["pimple"],
+                     "no pimple solve parts" if solves is None else
+                     "pressure solve %.0f %% of pimple, a pressure solve "
+                     "in every step and the pimple* parts within pimple: %s"
+                     % (100*solves[0], "yes" if solves[1] else "NO")))
 
 
 def matchRows(A, B):

@@ -68,6 +68,21 @@ const Foam::word Foam::timedOversetFvMesh::pimpleInterpolatePart
     "pimpleOversetInterpolate"
 );
 
+const Foam::word Foam::timedOversetFvMesh::pressureSolvePart
+(
+    "pimplePressureSolve"
+);
+
+const Foam::word Foam::timedOversetFvMesh::momentumSolvePart
+(
+    "pimpleMomentumSolve"
+);
+
+const Foam::word Foam::timedOversetFvMesh::otherSolvePart
+(
+    "pimpleOtherSolve"
+);
+
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -83,6 +98,34 @@ void Foam::timedOversetFvMesh::timedInterpolate(Field<Type>& psi) const
         stepTimers::scope timer(timers_, pimpleInterpolatePart);
         dynamicOversetFvMesh::interpolate(psi);
     }
+}
+
+
+template<class Type>
+const Foam::word& Foam::timedOversetFvMesh::solvePart(const fvMatrix<Type>& m)
+{
+    if (std::is_same<Type, vector>::value)
+    {
+        return momentumSolvePart;
+    }
+    const word& name = m.psi().name();
+    if (std::is_same<Type, scalar>::value && (name == "p" || name == "p_rgh"))
+    {
+        return pressureSolvePart;
+    }
+    return otherSolvePart;
+}
+
+
+template<class Type>
+Foam::SolverPerformance<Type> Foam::timedOversetFvMesh::timedSolve
+(
+    fvMatrix<Type>& m,
+    const dictionary& dict
+) const
+{
+    stepTimers::scope timer(timers_, solvePart(m));
+    return dynamicOversetFvMesh::solve(m, dict);
 }
 
 
@@ -169,6 +212,9 @@ Foam::timedOversetFvMesh::timedOversetFvMesh(const IOobject& io)
         timers_.add(waitPart, 0);
     }
     timers_.add(pimpleInterpolatePart, 0);
+    timers_.add(pressureSolvePart, 0);
+    timers_.add(momentumSolvePart, 0);
+    timers_.add(otherSolvePart, 0);
 }
 
 
@@ -201,6 +247,46 @@ void Foam::timedOversetFvMesh::interpolate(symmTensorField& psi) const
 void Foam::timedOversetFvMesh::interpolate(tensorField& psi) const
 {
     timedInterpolate(psi);
+}
+
+
+Foam::SolverPerformance<Foam::scalar> Foam::timedOversetFvMesh::solve
+(
+    fvMatrix<scalar>& m,
+    const dictionary& dict
+) const
+{
+    return timedSolve(m, dict);
+}
+
+
+Foam::SolverPerformance<Foam::vector> Foam::timedOversetFvMesh::solve
+(
+    fvMatrix<vector>& m,
+    const dictionary& dict
+) const
+{
+    return timedSolve(m, dict);
+}
+
+
+Foam::SolverPerformance<Foam::symmTensor> Foam::timedOversetFvMesh::solve
+(
+    fvMatrix<symmTensor>& m,
+    const dictionary& dict
+) const
+{
+    return timedSolve(m, dict);
+}
+
+
+Foam::SolverPerformance<Foam::tensor> Foam::timedOversetFvMesh::solve
+(
+    fvMatrix<tensor>& m,
+    const dictionary& dict
+) const
+{
+    return timedSolve(m, dict);
 }
 
 
