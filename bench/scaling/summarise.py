@@ -31,7 +31,8 @@ import numpy as np
 
 sys.path.insert(0, os.environ.get("FLAPFOAM_PROJECT_DIR", os.path.join(
     os.path.dirname(os.path.abspath(__file__)), "../..")) + "/scripts")
-from flapfoam import mpiCounts, rankTables, scalingModel, stepTimers  # noqa
+from flapfoam import (mpiCounts, rankTables, scalingModel,  # noqa: E402
+                      scalingValidate, stepTimers)
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import charts  # noqa: E402
 import report  # noqa: E402
@@ -102,16 +103,6 @@ def read_timed(folder, startup):
                      for c in ("rbd", "overset", "pimple", "total", "parts")},
                     rounds=len(g))
             for k, g in groups.items()}
-
-
-def read_ping_pong(fname):
-    """(alpha, beta) of pingPong's last line."""
-    with open(fname) as f:
-        for line in f:
-            w = line.split()
-            if len(w) == 5 and w[1] == "alpha":
-                return float(w[2]), float(w[4])
-    raise ValueError("%s: no 'pingPong: alpha A beta B' line" % fname)
 
 
 def pimple_traffic(traffic, structure):
@@ -238,7 +229,7 @@ def load(args):
         if os.path.isdir(os.path.join(args.dir, lv, "traffic"))}
     data["timed"] = {lv: read_timed(os.path.join(args.dir, lv, "timed"),
                                     args.startup) for lv in levels}
-    data["machine"] = read_ping_pong(os.path.join(args.dir, "pingPong.log"))
+    data["machine"] = scalingValidate.read_ping_pong(os.path.join(args.dir, "pingPong.log"))
     data["pimpleTraffic"] = pimple_traffics(data, args.countLevel)
     data["stencils"] = [s for s in STENCILS if any(
         k[2] == s for k in data["traffic"][args.countLevel])]

@@ -164,9 +164,6 @@ def read_medians(folder, startup):
     return out
 
 
-RUN_NAME = re.compile(r"^(\w+)-(\w+)-np(\d+)(-renumbered)?(?:-r(\d+))?$")
-
-
 def read_rows(root):
     """runs.tsv's rows (dicts) of the runs that ended, with their folder,
     grouped by (stencil, method, ranks, renumbered): the rounds of a
@@ -178,7 +175,7 @@ def read_rows(root):
     groups = {}
     for row in rows:
         folder = os.path.join(root, "runs", row["name"])
-        m = RUN_NAME.match(row["name"])
+        m = timedRounds.NAME.match(row["name"])
         if row.get("rc") != "0" or not os.path.isdir(folder) or not m:
             continue
         key = (m.group(1), m.group(2), int(m.group(3)), bool(m.group(4)))
