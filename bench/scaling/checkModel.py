@@ -76,6 +76,11 @@ def check_tables(tmp):
           + "4(1 3 2 3)\n")
     nbr = rankTables.neighbour_ranks(mesh, np.array([0, 1, 2, 2]))
     check("neighbour ranks", list(nbr) == [2, 2, 2], str(nbr))
+    # one rank: gaps 1, 1, 2, 2; two ranks by rows: 1 each, by columns 1
+    gaps = [list(rankTables.cell_order_gap(mesh, np.array(d)))
+            for d in ([0, 0, 0, 0], [0, 0, 1, 1], [0, 1, 0, 1])]
+    check("cell order gap", gaps == [[1.5], [1.0, 1.0], [1.0, 1.0]],
+          str(gaps))
 
 
 def bw(own, total, p_sat=2.0):

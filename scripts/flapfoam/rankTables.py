@@ -15,9 +15,12 @@ Per-rank tables of a decomposition, for the scaling bench (bench/scaling):
   decomposePar -dry-run -cellDist (ascii or binary) as the labelList
   constant/cellDecomposition that decomposePar -cellDist writes;
 - neighbour_ranks(polyMesh, decomposition): per rank, the ranks it shares
-  faces with (the messages of one halo exchange).
+  faces with (the messages of one halo exchange);
+- cell_order_gap(polyMesh, decomposition): per rank, the mean distance
+  between the two cells of a face in the rank's own cell numbering.
 
     python3 -m flapfoam.rankTables -cellDist CELLDIST OUT
+    python3 -m flapfoam.rankTables -cellOrder POLYMESH DECOMPOSITION...
 """
 
 import sys
@@ -133,11 +136,41 @@ def neighbour_ranks(poly_mesh, decomposition):
     return np.bincount(pairs[0], minlength=n)
 
 
+def cell_order_gap(poly_mesh, decomposition):
+    """Per rank (array, index = rank): the mean distance |i - j| between
+    the two cells of its internal faces in the rank's own numbering (its
+    cells in the mesh's order, as decomposePar keeps them): the spread of
+    the rank's matrix around its diagonal (0 for a rank without such a
+    face)."""
+    owner = np.asarray(foamMesh.readLabels(poly_mesh + "/owner"))
+    neighbour = np.asarray(foamMesh.readLabels(poly_mesh + "/neighbour"))
+    owner = owner[:len(neighbour)]
+    local = np.empty(len(decomposition), dtype=int)
+    n = int(decomposition.max()) + 1
+    for r in range(n):
+        cells = np.flatnonzero(decomposition == r)
+        local[cells] = np.arange(len(cells))
+    inside = decomposition[owner] == decomposition[neighbour]
+    gap = np.abs(local[owner[inside]] - local[neighbour[inside]])
+    rank = decomposition[owner[inside]]
+    faces = np.bincount(rank, minlength=n)
+    return np.bincount(rank, weights=gap, minlength=n)/np.maximum(faces, 1)
+
+
+USAGE = """usage: python3 -m flapfoam.rankTables -cellDist CELLDIST OUT
+       python3 -m flapfoam.rankTables -cellOrder POLYMESH DECOMPOSITION..."""
+
+
 def main(argv):
-    if len(argv) != 3 or argv[0] != "-cellDist":
-        sys.exit("usage: python3 -m flapfoam.rankTables -cellDist CELLDIST "
-                 "OUT")
-    cell_decomposition(argv[1], argv[2])
+    if len(argv) == 3 and argv[0] == "-cellDist":
+        cell_decomposition(argv[1], argv[2])
+    elif len(argv) >= 3 and argv[0] == "-cellOrder":
+        for fname in argv[2:]:
+            gap = cell_order_gap(argv[1], read_decomposition(fname))
+            print("%s: mean cell distance of a face, largest rank %.0f, "
+                  "mean over ranks %.0f" % (fname, gap.max(), gap.mean()))
+    else:
+        sys.exit(USAGE)
 
 
 if __name__ == "__main__":
