@@ -1,8 +1,8 @@
 #------------------------------------------------------------------------------
 # flapFoam: shell functions of the drone cases' Alltest scripts (sourced).
 # Each prints PASS/FAIL lines "PASS [label] ..." and sets status=1 on a
-# failure: run, motionCycle, plots, result, flightData, quasiSteady,
-# vacuum.  Needs:
+# failure: run, motionCycle, plots, result, sameFiles, flightData,
+# quasiSteady, vacuum.  Needs:
 # python (Debian's python3), the case folder as the working directory,
 # testRuns (the folder of the checks' runs and logs, set by the Alltest),
 # checkRun (the single-wing drone's scripts/checkRun.py).
@@ -180,6 +180,25 @@ result()
     shift
     "$python" "$checkRun" "$@" | sed -E "s/^(PASS|FAIL) /\1 [$label] /"
     [ "${PIPESTATUS[0]}" -eq 0 ] || status=1
+}
+
+# sameFiles <label> <text> <dirA> <dirB> <file...>: PASS if every file
+# (a path under both folders) is byte for byte the same in both
+sameFiles()
+{
+    local label="$1" text="$2" a="$3" b="$4" f differ=()
+    shift 4
+    for f in "$@"
+    do
+        cmp -s "$a/$f" "$b/$f" || differ+=("$f")
+    done
+    if [ "${#differ[@]}" -eq 0 ]
+    then
+        echo "PASS [$label] $text: $# files byte for byte the same"
+    else
+        echo "FAIL [$label] $text: differ: ${differ[*]}"
+        status=1
+    fi
 }
 
 # flightData <label> <flightData.py arguments...>

@@ -117,6 +117,7 @@ def table(rows, startup):
                 m["pimple"], m["total"], 100*m["overset"]/m["total"],
                 r["mem"], speedup(b, r), speedup(tracking.get(key), r),
                 mratio))
+    lines += pimple_table(rows)
     lines += [
         "",
         "Machine: %s, %d CPUs, load average %s; %s." % (
@@ -124,6 +125,36 @@ def table(rows, startup):
             " ".join("%.2f" % x for x in os.getloadavg()),
             time.strftime("%Y-%m-%d %H:%M")),
     ]
+    return lines
+
+
+def pimple_table(rows):
+    """The pimple column split (stepTimers.pimple_split) of the rows that
+    have it: the markdown lines."""
+    split = [(r, stepTimers.pimple_split(r["med"])) for r in rows]
+    split = [(r, s) for r, s in split if s]
+    if not split:
+        return []
+    lines = [
+        "",
+        "Where pimple goes (medians per step, seconds; the fvOption "
+        "`pimpleTimers`): momentum = assembly + solve, pressure = the "
+        "correctors (of which the solves), turbulence = `correct()` + its "
+        "solves (and the writes, flightData), the overset interpolations "
+        "inside PIMPLE (calls a step), pressure iterations a step.",
+        "",
+        "| level | ranks | stencil | pimple [s] | momentum | pressure "
+        "(solves) | turbulence | interpolate (calls) | rest | p iterations |",
+        "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|",
+    ]
+    for r, s in split:
+        lines.append(
+            "| %s | %d | %s | %.3f | %.3f | %.3f (%.3f) | %.3f | %.3f (%.0f) "
+            "| %.3f | %.0f |" % (
+                r["level"], r["np"], r["stencil"], r["med"]["pimple"],
+                s["momentum"], s["pressure"], s["pressureSolve"],
+                s["turbulence"], s["interpolate"], s["interpolations"],
+                s["rest"], s["pIterations"]))
     return lines
 
 

@@ -165,6 +165,34 @@ def check_table(data):
     return lines
 
 
+def split_table(data):
+    """Where the timed runs' pimple goes (runs with the pimpleTimers
+    fvOption)."""
+    rows = [(lv, key, t) for lv in data["timed"]
+            for key, t in sorted(data["timed"][lv].items()) if t.get("split")]
+    if not rows:
+        return []
+    lines = [
+        "", "### Where pimple goes (the timed runs, medians)", "",
+        "momentum = assembly + solve, pressure = the correctors (of which "
+        "the solves), turbulence = `correct()` + its solves, the overset "
+        "interpolations inside PIMPLE (calls a step), pressure iterations "
+        "a step; the maxima over the ranks (per rank: stepTimersRanks.dat)."
+        , "",
+        "| level | method | ranks | stencil | pimple [s] | momentum | "
+        "pressure (solves) | turbulence | interpolate (calls) | p iterations "
+        "|", "|---|---|---:|---|---:|---:|---:|---:|---:|---:|"]
+    for lv, (method, p, stencil), t in rows:
+        s = t["split"]
+        lines.append(
+            "| %s | %s | %d | %s | %.3f | %.3f | %.3f (%.3f) | %.3f | %.3f "
+            "(%.0f) | %.0f |" % (
+                lv, method, p, SHORT[stencil], t["pimple"], s["momentum"],
+                s["pressure"], s["pressureSolve"], s["turbulence"],
+                s["interpolate"], s["interpolations"], s["pIterations"]))
+    return lines
+
+
 def model_table(data, level):
     model = data["model"]
     ranks = sorted({p for (lv, _m, p, _s) in model if lv == level and p > 1})
@@ -256,6 +284,7 @@ def tables(data):
         lines += goals(data, level)
         lines += model_table(data, level)
     lines += check_table(data)
+    lines += split_table(data)
     lines += costs_table(data)
     lines += traffic_table(data)
     lines += traffic_check_table(data)

@@ -85,7 +85,8 @@ def read_timed(folder, startup):
     """{(method, P, stencil): {part: median over rounds of the per-run
     medians}} of a level's timed runs; method "serial" for P = 1; parts:
     rbd + overset + pimple (total less the rest of the step: writing the
-    fields, which the model leaves out)."""
+    fields, which the model leaves out); split: the pimple column's
+    (stepTimers.pimple_split of the medians, None without it)."""
     groups = {}
     for d in sorted(glob.glob(os.path.join(folder, "*-r*"))):
         m = re.match(r"(\w+)-np(\d+)-(\w+)-r\d+$", os.path.basename(d))
@@ -99,10 +100,14 @@ def read_timed(folder, startup):
         med["parts"] = float(np.median(parts))
         groups.setdefault((m.group(1), int(m.group(2)), m.group(3)),
                           []).append(med)
-    return {k: dict({c: float(np.median([r[c] for r in g]))
-                     for c in ("rbd", "overset", "pimple", "total", "parts")},
-                    rounds=len(g))
-            for k, g in groups.items()}
+    out = {}
+    for k, g in groups.items():
+        med = {c: float(np.median([r[c] for r in g]))
+               for c in set.intersection(*(set(r) for r in g))}
+        out[k] = dict({c: med[c] for c in
+                       ("rbd", "overset", "pimple", "total", "parts")},
+                      rounds=len(g), split=stepTimers.pimple_split(med))
+    return out
 
 
 def pimple_traffic(traffic, structure):

@@ -21,9 +21,11 @@ non-zero on failure.
         over the steps after the first nStartup of each file (PASS if below
         tol), and the largest per-step |total - sum|/total (reported: on
         shared cores one step can be descheduled between two timers); the
-        PIMPLE parts of timedOversetFvMesh (SOLVE_PARTS and
-        pimpleOversetInterpolate) present, a pressure solve in every step,
-        and their sum within pimple at every step (they lie inside it).
+        PIMPLE parts (timedOversetFvMesh's solves and interpolations, the
+        fvOption pimpleTimers' laps) present, a pressure solve with
+        iterations in every step, and the parts adding up to pimple within
+        1 % at every step (parallel: per rank, in its own means of
+        stepTimersRanks.dat).
 
     checkRun.py compare A B [--columns q_0,qDot_0,...] [--tol 1e-6]
                             [--rows last|all] [--state]
@@ -148,17 +150,32 @@ def checkPrescribed(args):
 
 SOLVE_PARTS = ("pimplePressureSolve", "pimpleMomentumSolve",
                "pimpleOtherSolve")
+LAP_PARTS = ("pimpleMomentum", "pimplePressure", "pimpleTurbulence")
+PIMPLE_PARTS = SOLVE_PARTS + LAP_PARTS + ("pimpleOversetInterpolate",)
+PIMPLE_COVER = 0.01     # the parts add up to pimple within this, a step
 
 
-def pimple_parts(rows):
+def parts_cover(r):
+    """Whether a row's pimple* parts add up to its pimple (PIMPLE_COVER)."""
+    return abs(sum(r[n] for n in PIMPLE_PARTS) - r["pimple"]) \
+        <= PIMPLE_COVER*r["pimple"]
+
+
+def pimple_parts(rows, ranks):
     """(pressure solve share of pimple, whether every step has a pressure
-    solve and its pimple* parts within pimple) of stepTimers rows; None
-    where a part is missing."""
-    names = SOLVE_PARTS + ("pimpleOversetInterpolate",)
-    if not rows or any(n not in rows[0] for n in names):
+    solve with iterations and its pimple* parts add up to pimple within
+    PIMPLE_COVER) of stepTimers rows; None where a part
+    is missing (the fvOption pimpleTimers splits the laps).  In parallel
+    (ranks: the rows of stepTimersRanks.dat) the parts add up per rank, in
+    its own means (the columns of a step are maxima from different
+    ranks)."""
+    if not rows or any(n not in rows[0] for n in PIMPLE_PARTS + (
+            "pIterations1",)):
         return None
-    inside = all(sum(r[n] for n in names) <= r["pimple"]*(1 + 1e-9)
-                 and r["pimplePressureSolve"] > 0 for r in rows)
+    cover = ranks if len(ranks) > 1 else rows
+    inside = all(parts_cover(r) for r in cover) and all(
+        r["pimplePressureSolve"] > 0 and r["pIterations1"] > 0
+        for r in rows)
     share = np.mean([r["pimplePressureSolve"] for r in rows]) \
         / np.mean([r["pimple"] for r in rows])
     return share, inside
@@ -180,7 +197,9 @@ def checkTimers(args):
     perStep = np.abs(total - parts)/total
     share = {k: np.mean([r[k] for r in rows])/total.mean()
              for k in ("rbd", "overset", "pimple")}
-    solves = pimple_parts(rows)
+    ranks = [r for f in files for r in stepTimers.read_ranks(
+        os.path.join(os.path.dirname(f), "stepTimersRanks.dat"))]
+    solves = pimple_parts(rows, ranks)
     return report(closureMean <= args.tol and solves is not None
                   and solves[1], args.name or "timers",
                   "%d steps: |1 - mean(rbd+overset+pimple)/mean(total)| = "
@@ -190,10 +209,13 @@ def checkTimers(args):
                   % (len(rows), 100*closureMean, 100*args.tol,
                      100*perStep.max(), total.mean(), 100*share["rbd"],
                      100*share["overset"], 100*share["pimple"],
-                     "no pimple solve parts" if solves is None else
+                     "no pimple parts (solves, laps, pIterations1)"
+                     if solves is None else
                      "pressure solve %.0f %% of pimple, a pressure solve "
-                     "in every step and the pimple* parts within pimple: %s"
-                     % (100*solves[0], "yes" if solves[1] else "NO")))
+                     "with iterations in every step and the pimple* parts "
+                     "= pimple within %g %%: %s"
+                     % (100*solves[0], 100*PIMPLE_COVER,
+                        "yes" if solves[1] else "NO")))
 
 
 def matchRows(A, B):

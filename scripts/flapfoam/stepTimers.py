@@ -18,6 +18,42 @@ from flapfoam.tables import timeValue
 GROUPS = ["rbd", "overset", "pimple", "total"]
 
 
+def is_count(name):
+    """Whether a column counts (timedOversetFvMesh: the iterations of each
+    pressure solve, pIterations<k>, and pimpleInterpolations) instead of
+    holding seconds."""
+    return name.startswith("pIterations") or name == "pimpleInterpolations"
+
+
+# The pimple column split (timedOversetFvMesh's solves and interpolations,
+# the fvOption pimpleTimers' laps): group -> its parts
+PIMPLE_SPLIT = (
+    ("momentum", ("pimpleMomentum", "pimpleMomentumSolve")),
+    ("pressure", ("pimplePressure", "pimplePressureSolve")),
+    ("pressureSolve", ("pimplePressureSolve",)),
+    ("turbulence", ("pimpleTurbulence", "pimpleOtherSolve")),
+    ("interpolate", ("pimpleOversetInterpolate",)),
+)
+
+
+def pimple_split(values):
+    """The pimple column's groups (seconds) of a row or of per-column means
+    or medians, 'rest' (pimple less momentum, pressure, turbulence and
+    interpolate), the pressure iterations of the step (the pIterations<k>
+    summed) and the interpolation calls; None without the laps (runs
+    without the fvOption pimpleTimers)."""
+    if "pimpleTurbulence" not in values:
+        return None
+    out = {g: sum(values.get(p, 0.0) for p in parts)
+           for g, parts in PIMPLE_SPLIT}
+    out["rest"] = values["pimple"] - sum(
+        out[g] for g in ("momentum", "pressure", "turbulence", "interpolate"))
+    out["pIterations"] = sum(v for k, v in values.items()
+                             if k.startswith("pIterations"))
+    out["interpolations"] = values.get("pimpleInterpolations", 0.0)
+    return out
+
+
 def find_files(path):
     """The stepTimers.dat files of an input, in start-time order."""
     if os.path.isfile(path):
@@ -26,7 +62,7 @@ def find_files(path):
     for root, _dirs, files in os.walk(path):
         for name in files:
             if name.startswith("stepTimers") and name.endswith(".dat") \
-                    and "Summary" not in name:
+                    and "Summary" not in name and "Ranks" not in name:
                 found.append(os.path.join(root, name))
     if not found:
         sys.exit("plotStepTimers: no stepTimers.dat under " + path)
@@ -58,6 +94,22 @@ def read_file(fname):
                          "header of %d columns" %
                          (fname, len(values), len(columns)))
             rows.append(dict(zip(columns, values)))
+    return rows
+
+
+def read_ranks(fname):
+    """The rows of stepTimersRanks.dat (per rank its own mean per step of
+    every column) as dicts {column: value}; [] if there is none."""
+    if not os.path.isfile(fname):
+        return []
+    columns, rows = None, []
+    with open(fname) as f:
+        for line in f:
+            words = line.split()
+            if words[:2] == ["#", "rank"]:
+                columns = words[1:]
+            elif words and words[0] != "#" and columns:
+                rows.append(dict(zip(columns, map(float, words))))
     return rows
 
 
@@ -101,8 +153,10 @@ def summary(label, columns, data):
     for name in names:
         v = col_other if name == "other" else col[name]
         means[name] = v.mean()
-        print("    %-26s %14.6g %14.6g %7.2f%%" %
-              (name, v.mean(), np.median(v), 100*v.mean()/mean_total))
+        share = "-" if is_count(name) else \
+            "%7.2f%%" % (100*v.mean()/mean_total)
+        print("    %-26s %14.6g %14.6g %8s" %
+              (name, v.mean(), np.median(v), share))
     print("    closure |rbd + overset + pimple - total|/total: "
           "max %.2f%%, mean %.2f%% (step at time %g)" %
           (100*closure.max(), 100*closure.mean(),

@@ -21,6 +21,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "timedOversetFvMesh.H"
+#include "cellCellStencilObject.H"
 #include "addToRunTimeSelectionTable.H"
 #include "volFields.H"
 #include "coupledFvPatchField.H"
@@ -83,6 +84,16 @@ const Foam::word Foam::timedOversetFvMesh::otherSolvePart
     "pimpleOtherSolve"
 );
 
+const Foam::word Foam::timedOversetFvMesh::pimpleInterpolationsPart
+(
+    "pimpleInterpolations"
+);
+
+const Foam::word Foam::timedOversetFvMesh::pressureIterationsPart
+(
+    "pIterations"
+);
+
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -91,11 +102,40 @@ void Foam::timedOversetFvMesh::timedInterpolate(Field<Type>& psi) const
 {
     if (updating_)
     {
-        dynamicOversetFvMesh::interpolate(psi);
+        interpolateField(psi);
     }
     else
     {
         stepTimers::scope timer(timers_, pimpleInterpolatePart);
+        interpolateField(psi);
+        timers_.count(pimpleInterpolationsPart, 1);
+    }
+}
+
+
+template<class Type>
+void Foam::timedOversetFvMesh::interpolateField(Field<Type>& psi) const
+{
+    if (!compact_)
+    {
+        dynamicOversetFvMesh::interpolate(psi);
+        return;
+    }
+    const cellCellStencil& overlap = Stencil::New(*this);
+    if (overlap.cellStencil().size() != nCells())
+    {
+        return;     // as the base: no stencil yet
+    }
+    if (!compactPtr_.valid())
+    {
+        compactPtr_.reset(new compactInterpolation(overlap));
+    }
+    if (compactPtr_->valid())
+    {
+        compactPtr_->interpolate(overlap, psi);
+    }
+    else
+    {
         dynamicOversetFvMesh::interpolate(psi);
     }
 }
@@ -164,6 +204,7 @@ void Foam::timedOversetFvMesh::readOptions()
     const IOdictionary dict(dictHeader);
     timeWait_ =
         Pstream::parRun() && dict.getOrDefault<bool>("timeWait", false);
+    compact_ = dict.getOrDefault<bool>("compactInterpolation", true);
     const word mode(dict.getOrDefault<word>("rankReport", "first"));
     if (!rankReportModeNames.found(mode))
     {
@@ -199,7 +240,11 @@ Foam::timedOversetFvMesh::timedOversetFvMesh(const IOobject& io)
     updating_(false),
     timeWait_(false),
     rankReport_(rankReportMode::first),
-    reported_(false)
+    reported_(false),
+    compact_(true),
+    compactPtr_(),
+    pressureSolvesIndex_(-1),
+    nPressureSolves_(0)
 {
     readOptions();
 
@@ -256,7 +301,23 @@ Foam::SolverPerformance<Foam::scalar> Foam::timedOversetFvMesh::solve
     const dictionary& dict
 ) const
 {
-    return timedSolve(m, dict);
+    const SolverPerformance<scalar> perf(timedSolve(m, dict));
+
+    if (&solvePart(m) == &pressureSolvePart)
+    {
+        if (pressureSolvesIndex_ != time().timeIndex())
+        {
+            pressureSolvesIndex_ = time().timeIndex();
+            nPressureSolves_ = 0;
+        }
+        timers_.count
+        (
+            pressureIterationsPart + Foam::name(++nPressureSolves_),
+            perf.nIterations()
+        );
+    }
+
+    return perf;
 }
 
 
@@ -296,11 +357,16 @@ bool Foam::timedOversetFvMesh::update()
 
     updating_ = true;
 
+    // The stencil changes with the motion: its compact exchange is built
+    // again at the next interpolation
+    compactPtr_.clear();
+
     bool changed = false;
     {
         stepTimers::scope timer(timers_, movePointsPart);
         changed = dynamicMotionSolverListFvMesh::update();
     }
+    compactPtr_.clear();
 
     if (changed)
     {

@@ -51,6 +51,9 @@ Foam::stepTimers::stepTimers(const objectRegistry& db)
             true
         )
     ),
+    topLevel_(0),
+    lapStart_(clock::now()),
+    lapTopLevel_(0),
     lastTimeIndex_(-1)
 {}
 
@@ -80,10 +83,15 @@ void Foam::stepTimers::close(const word& part, const scalar elapsed)
     const scalar inside = open_.remove();
 
     // The enclosing scope (if any) sees the whole elapsed time as nested:
-    // the part inside it now, the rest in add() below
+    // the part inside it now, the rest in add() below; without one it
+    // counts as added outside any scope (the laps subtract it)
     if (open_.size())
     {
         open_.last() += inside;
+    }
+    else
+    {
+        topLevel_ += inside;
     }
 
     add(part, elapsed - inside);
@@ -98,7 +106,17 @@ void Foam::stepTimers::add(const word& part, const scalar s)
     {
         open_.last() += s;
     }
+    else
+    {
+        topLevel_ += s;
+    }
 
+    accumulate(part, s);
+}
+
+
+void Foam::stepTimers::accumulate(const word& part, const scalar s)
+{
     auto iter = seconds_.find(part);
 
     if (iter.found())
@@ -110,6 +128,41 @@ void Foam::stepTimers::add(const word& part, const scalar s)
         seconds_.insert(part, s);
         parts_.append(part);
     }
+}
+
+
+void Foam::stepTimers::stamp(const word& name)
+{
+    lapStart_ = clock::now();
+    lapTopLevel_ = topLevel_;
+    stamps_.set(name, lapStart_);
+}
+
+
+void Foam::stepTimers::lap(const word& part)
+{
+    const clock::time_point now = clock::now();
+    const scalar inside = topLevel_ - lapTopLevel_;
+    add(part, seconds(lapStart_, now) - inside);
+    lapStart_ = now;
+    lapTopLevel_ = topLevel_;
+}
+
+
+void Foam::stepTimers::endLap()
+{
+    if (!trailing_.empty())
+    {
+        lap(trailing_);
+        trailing_.clear();
+    }
+}
+
+
+void Foam::stepTimers::count(const word& name, const label n)
+{
+    counts_.insert(name);
+    accumulate(name, n);
 }
 
 
@@ -139,6 +192,7 @@ void Foam::stepTimers::reset()
     }
 
     stamps_.clear();
+    trailing_.clear();
 }
 
 

@@ -143,7 +143,7 @@ Foam::scalarList Foam::functionObjects::stepTimers::gather
     const scalar total,
     const scalar pimple,
     const scalar preUpdate
-) const
+)
 {
     const label nMeasured = measured.size();
 
@@ -171,6 +171,15 @@ Foam::scalarList Foam::functionObjects::stepTimers::gather
     }
 
     values.last() = own_;
+
+    if (nSteps_ + 1 > nStartup_)
+    {
+        rankSums_.resize(values.size() - 1, Zero);
+        forAll(rankSums_, coli)
+        {
+            rankSums_[coli] += values[coli];
+        }
+    }
 
     // The maximum over the ranks, on the master
     Pstream::listCombineGather(values, maxEqOp<scalar>());
@@ -274,7 +283,8 @@ void Foam::functionObjects::stepTimers::writeSummary(Ostream& os) const
     }
 
     os  << "# share = mean/mean(total); other = total - rbd - overset - pimple"
-        << " (preUpdate is in it); pimple* parts lie inside pimple" << nl
+        << " (preUpdate is in it); pimple* parts lie inside pimple; counts"
+        << " (iterations) have no share" << nl
         << "# " << setf(ios_base::left) << setw(w - 2) << "part"
         << tab << setw(16) << "mean"
         << tab << setw(16) << "median"
@@ -287,7 +297,15 @@ void Foam::functionObjects::stepTimers::writeSummary(Ostream& os) const
         os  << setf(ios_base::left) << setw(w) << name
             << tab << setw(16) << m
             << tab << setw(16) << median(values)
-            << tab << (totalMean > 0 ? m/totalMean : 0) << nl;
+            << tab;
+        if (timers_.isCount(name))
+        {
+            os  << "-" << nl;
+        }
+        else
+        {
+            os  << (totalMean > 0 ? m/totalMean : 0) << nl;
+        }
     };
 
     forAll(history_, coli)
@@ -309,6 +327,44 @@ void Foam::functionObjects::stepTimers::writeSummary(Ostream& os) const
     row("stepTimersCost", ownHistory_);
 
     os  << flush;
+}
+
+
+void Foam::functionObjects::stepTimers::writeRanksFile() const
+{
+    List<scalarList> perRank(Pstream::nProcs());
+    perRank[Pstream::myProcNo()] = rankSums_;
+    Pstream::gatherList(perRank);
+
+    if (!writeToFile() || !filePtr_.valid())
+    {
+        return;
+    }
+    OFstream os(filePtr_->name().path()/(typeName + "Ranks.dat"));
+    os.setf(ios_base::scientific, ios_base::floatfield);
+    os.precision(writePrecision_);
+
+    const label n = max(label(other_.size()), label(1));
+    os  << "# Per rank: its own mean per step over the " << other_.size()
+        << " summarised steps" << nl << "# rank" << tab << "nSteps";
+    for (const word& name : measured)
+    {
+        os  << tab << name;
+    }
+    for (const word& name : parts_)
+    {
+        os  << tab << name;
+    }
+    os  << nl;
+    forAll(perRank, proci)
+    {
+        os  << proci << tab << other_.size();
+        for (const scalar sum : perRank[proci])
+        {
+            os  << tab << sum/n;
+        }
+        os  << nl;
+    }
 }
 
 
@@ -478,6 +534,9 @@ void Foam::functionObjects::stepTimers::publish(const scalarList& values)
 
 bool Foam::functionObjects::stepTimers::execute()
 {
+    // The stretch still open (Foam::fv::pimpleTimers: the turbulence)
+    timers_.endLap();
+
     // Synchronise the ranks, so that the step ends at the same instant on
     // all of them (the wait of the faster ranks counts in their pimple),
     // and learn whether a rank used a part that is not a column yet
@@ -543,6 +602,7 @@ bool Foam::functionObjects::stepTimers::end()
     }
 
     writeSummaryFile();
+    writeRanksFile();
 
     return true;
 }
