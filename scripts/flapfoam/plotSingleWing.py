@@ -65,12 +65,23 @@ from flapfoam.tables import joinedTable, startFolders
 from flapfoam.wang import imposedJoints
 
 
+def referenceValues(coeffs):
+    """The prescribed joints, f, U_ref and the dynamic pressure times area
+    of the multibody coefficients (the module's docstring)."""
+    joints = imposedJoints(coeffs)
+    rho = float(coeffs.get("rhoInf", ["1.2"])[0])
+    flap = joints.get(2)
+    f = flap.frequency if flap else 20.0
+    Aphi = flap.amplitude if flap else 75.0*math.pi/180.0
+    Uref = 4.0*f*Aphi*geo.radiusOfGyration()
+    return SimpleNamespace(joints=joints, rho=rho, f=f, Uref=Uref,
+                           qref=0.5*rho*geo.planformArea()*Uref**2)
+
+
 def readRun(case, dictPath):
     """The run's tables, prescribed joints and reference values; prints
     them."""
-    coeffs = multibodyCoeffs(dictPath)
-    joints = imposedJoints(coeffs)
-    rho = float(coeffs.get("rhoInf", ["1.2"])[0])
+    ref = referenceValues(multibodyCoeffs(dictPath))
 
     base = os.path.join(case, "postProcessing", "eABAMeshMotion")
     tables = flightData.tables(case)
@@ -89,22 +100,16 @@ def readRun(case, dictPath):
     bc = {c: i for i, c in enumerate(bcols)}
     t = J[:, 0]
 
-    flap = joints.get(2)
-    f = flap.frequency if flap else 20.0
-    Aphi = flap.amplitude if flap else 75.0*math.pi/180.0
-    S = geo.planformArea()
-    R2 = geo.radiusOfGyration()
-    Uref = 4.0*f*Aphi*R2
-    qref = 0.5*rho*S*Uref**2
-
     print("plotRun: %d steps, t = %.6g ... %.6g s (%.3f cycles), %d restart "
-          "folder(s)" % (len(t) - 1, t[0], t[-1], (t[-1] - t[0])*f,
+          "folder(s)" % (len(t) - 1, t[0], t[-1], (t[-1] - t[0])*ref.f,
                          max(len(startFolders(base)) - 1, 0)))
     print("plotRun: S = %.6g m^2, R2 = %.6g m (about the flapping axis; "
           "quadrature %.6g), U_ref = 4 f A_phi R2 = %.6g m/s, rho = %g"
-          % (S, R2, geo.radiusOfGyrationQuadrature(), Uref, rho))
-    return SimpleNamespace(joints=joints, J=J, B=B, jc=jc, bc=bc, t=t, f=f,
-                           Uref=Uref, qref=qref, source=source)
+          % (geo.planformArea(), geo.radiusOfGyration(),
+             geo.radiusOfGyrationQuadrature(), ref.Uref, ref.rho))
+    return SimpleNamespace(joints=ref.joints, J=J, B=B, jc=jc, bc=bc, t=t,
+                           f=ref.f, Uref=ref.Uref, qref=ref.qref,
+                           source=source)
 
 
 def trajectory(r, out):
@@ -120,6 +125,12 @@ def trajectory(r, out):
           "m/s" % (x[-1], z[-1], J[-1, jc["qDot_1"]], J[-1, jc["qDot_0"]]))
 
 
+def coefficients(B, bc, qref):
+    """The wing's C_xI and C_zI of the bodies table B (columns bc) at the
+    times of their flow, t_{k-1} (the row of t_k holds that load)."""
+    return (B[:-1, 0], B[1:, bc["wing:Fx"]]/qref, B[1:, bc["wing:Fz"]]/qref)
+
+
 def forceCoefficients(r, out):
     """(b) wing force coefficients: the row of t_k holds the load of the
     flow at t_{k-1}."""
@@ -127,9 +138,7 @@ def forceCoefficients(r, out):
     f, qref, Uref = r.f, r.qref, r.Uref
     if not ("wing:Fx" in bc and len(B) > 1):
         return
-    tF = B[:-1, 0]
-    Cx = B[1:, bc["wing:Fx"]]/qref
-    Cz = B[1:, bc["wing:Fz"]]/qref
+    tF, Cx, Cz = coefficients(B, bc, qref)
     # the phase of the stroke at the load times
     qDot2 = np.interp(tF, t, J[:, jc["qDot_2"]]) if "qDot_2" in jc \
         else np.zeros_like(tF)
