@@ -25,12 +25,17 @@ Description
         0.02 s), parts stay in the order of first use, reset zeroes the
         parts and clears the stamps but keeps the names, New returns the
         same object for the Time database and any registry on it, nested
-        scopes and adds inside a scope are exclusive, stamps;
+        scopes and adds inside a scope are exclusive, stamps; laps from a
+        stamp exclude the scopes inside them and add up with them to the
+        elapsed time, the trailing lap goes to its part at endLap (and not
+        after a reset); counts add up and take nothing from scopes or laps;
       - the function object on a plain time loop (no mesh): the header and
         columns of stepTimers.dat, rbd + overset + pimple within 5 % of
         total in every step (and with preUpdate equal to it), a part first
         used later adds a header line, pimple = total without the mesh
-        update stamps, the summary file, a bad value, an unknown key.
+        update stamps, the summary file, the per-rank file (its own means:
+        rbd + overset + pimple + preUpdate within 5 % of total), a bad
+        value, an unknown key.
 
     Sleeps are timed against loose upper bounds: the machine may be shared.
 
@@ -270,6 +275,82 @@ TEST(stepTimersRegistry, stamps)
 }
 
 
+TEST(stepTimersRegistry, lapsExcludeTheScopesInside)
+{
+    scratchTime runTime("flapFoamTest-stepTimers", 1, 1);
+    stepTimers& timers = stepTimers::New(runTime());
+
+    // From the stamp: 10 ms, a 20 ms scope (nested: excluded), 10 ms
+    timers.stamp(stepTimers::meshUpdated);
+    const auto start = stepTimers::clock::now();
+    scalar outside = sleepMs(10);
+    scalar inside = 0;
+    {
+        stepTimers::scope solve(timers, "pimplePressureSolve");
+        inside = sleepMs(20);
+    }
+    outside += sleepMs(10);
+    timers.lap("pimpleMomentum");
+
+    EXPECT_GE(timers["pimpleMomentum"], 0.02);
+    EXPECT_LT(timers["pimpleMomentum"], outside + margin);
+    EXPECT_GE(timers["pimplePressureSolve"], 0.02);
+    EXPECT_LT(timers["pimplePressureSolve"], inside + margin);
+
+    // The next lap starts where this one ended; the trailing stretch goes
+    // to its part at endLap (the function object's execute)
+    sleepMs(10);
+    timers.lap("pimplePressure");
+    timers.trailingLap("pimpleTurbulence");
+    sleepMs(10);
+    timers.endLap();
+    const scalar elapsed =
+        stepTimers::seconds(start, stepTimers::clock::now());
+
+    EXPECT_GE(timers["pimplePressure"], 0.01);
+    EXPECT_GE(timers["pimpleTurbulence"], 0.01);
+    const scalar sum =
+        timers["pimpleMomentum"] + timers["pimplePressureSolve"]
+      + timers["pimplePressure"] + timers["pimpleTurbulence"];
+    EXPECT_NEAR(sum, elapsed, 1e-3);
+
+    // Without a trailing part endLap adds nothing; reset clears it
+    const scalar turbulence = timers["pimpleTurbulence"];
+    timers.endLap();
+    EXPECT_EQ(timers["pimpleTurbulence"], turbulence);
+    timers.trailingLap("pimpleTurbulence");
+    timers.reset();
+    timers.endLap();
+    EXPECT_EQ(timers["pimpleTurbulence"], 0);
+}
+
+
+TEST(stepTimersRegistry, countsAreNotSeconds)
+{
+    scratchTime runTime("flapFoamTest-stepTimers", 1, 1);
+    stepTimers& timers = stepTimers::New(runTime());
+
+    timers.stamp(stepTimers::meshUpdated);
+    {
+        stepTimers::scope solve(timers, "pimplePressureSolve");
+        timers.count("pIterations1", 17);
+        sleepMs(10);
+    }
+    timers.count("pIterations1", 3);
+    sleepMs(10);
+    timers.lap("pimplePressure");
+
+    EXPECT_EQ(timers["pIterations1"], 20);
+    EXPECT_TRUE(timers.isCount("pIterations1"));
+    EXPECT_FALSE(timers.isCount("pimplePressure"));
+
+    // Neither the scope nor the lap lost the counted "seconds"
+    EXPECT_GE(timers["pimplePressureSolve"], 0.01);
+    EXPECT_GE(timers["pimplePressure"], 0.01);
+    EXPECT_LT(timers["pimplePressure"], 0.5);
+}
+
+
 // * * * * * * * * * * * * * * Function object  * * * * * * * * * * * * * * //
 
 //- A run of nSteps steps timed as a solver times them (the parts
@@ -443,6 +524,40 @@ TEST(stepTimersFunctionObject, summary)
     }
     EXPECT_TRUE(foundSteps);
     EXPECT_TRUE(foundTotal);
+
+    // Per rank (one here): its own means, the same as the summary's
+    ASSERT_TRUE(isFile(run.dir/"stepTimersRanks.dat"));
+    std::vector<std::string> header, rank0;
+    for (const std::string& line : readLines(run.dir/"stepTimersRanks.dat"))
+    {
+        const std::vector<std::string> w = split(line);
+        if (w.size() > 2 && w[0] == "#" && w[1] == "rank")
+        {
+            header.assign(w.begin() + 1, w.end());
+        }
+        else if (!w.empty() && w[0] == "0")
+        {
+            rank0 = w;
+        }
+    }
+    ASSERT_EQ(header.size(), rank0.size());
+    EXPECT_EQ(std::stoi(rank0[1]), nSteps - nStartup);
+    scalar parts = 0, total = 0;
+    for (size_t i = 2; i < header.size(); ++i)
+    {
+        const scalar v = std::stod(rank0[i]);
+        if (header[i] == "rbd" || header[i] == "overset"
+         || header[i] == "pimple" || header[i] == "preUpdate")
+        {
+            parts += v;
+        }
+        if (header[i] == "total")
+        {
+            total = v;
+        }
+    }
+    EXPECT_GE(total, 0.010);
+    EXPECT_NEAR(parts, total, 0.05*total);
 }
 
 
