@@ -22,12 +22,15 @@ Per run (its flight data, log.overPimpleDyMFoam, stepTimers.dat):
 The guard (issue 25), a PASS/FAIL line each:
   - cycle-mean C_xI and C_zI within 1 % of the reference's (relative to
     the larger of the two means' magnitudes: C_xI's mean is near zero);
-  - max |C_zI(t) - C_zI,ref(t)| (the run interpolated to the reference's
-    times) within 3 % of the reference's C_zI range over the cycles;
+  - max |C_zI(t) - C_zI,ref(t)|, both averaged over 1 % of the cycle
+    (the run interpolated to the reference's times), within 3 % of the
+    reference's C_zI range over the cycles; the same step by step is
+    printed (INFO), not judged: the overset's single-step spikes of C_zI
+    alone exceed it (series_check);
   - x and z after the cycles within 1 % of the reference's excursion over
     them (max - min);
   - the continuity error no larger than the reference's.
-Exit status 1 if any fails.
+Exit status 1 if any judged check fails.
 """
 
 import argparse
@@ -159,10 +162,12 @@ def read_run(case, n_cycles):
 @dataclasses.dataclass
 class Check:
     """One line of the guard: its name, the measured share of the allowed
-    (at most 1 passes) and the text."""
+    (at most 1 passes), the text, and whether it counts for the verdict
+    (the step-by-step C_zI does not: informative)."""
     name: str
     ratio: float
     text: str
+    counts: bool = True
 
     @property
     def ok(self):
@@ -184,15 +189,25 @@ def mean_checks(ref, run):
 
 
 def series_check(ref, run):
-    """The largest instantaneous difference of C_zI."""
+    """The largest instantaneous difference of C_zI: informative, not in
+    the verdict.  The overset makes single-step spikes of C_zI (hole
+    cutting, donor changes) up to about a quarter of its range (SW tiny,
+    the paper's settings, against its own average over 1 % of the cycle),
+    at times that move when the steps do: a run at max Co 0.8, more
+    accurate than the reference, is 15 % of the range from it step by
+    step and 0.26 % smoothed (bench/pimple/results.md)."""
     sel = (ref.t >= ref.t0) & (ref.t <= ref.t1)
     span = np.ptp(ref.cz[sel])
     diff = np.abs(np.interp(ref.t[sel], run.t, run.cz) - ref.cz[sel])
+    noise = np.abs(ref.cz[sel] - smoothed(
+        ref.t, ref.cz, ref.t[sel], SERIES_WINDOW*(ref.t1 - ref.t0)))
     return Check(
         "C_zI(t)", diff.max()/(SERIES_TOL*span),
         "largest |C_zI - reference| %.4g at t = %.6g s: %.3g %% of the range "
-        "%.4g (at most %g %%)" % (diff.max(), ref.t[sel][np.argmax(diff)],
-                                  100*diff.max()/span, span, 100*SERIES_TOL))
+        "%.4g (%g %%: informative, the reference's own spikes reach %.3g %% "
+        "of the range)" % (diff.max(), ref.t[sel][np.argmax(diff)],
+                           100*diff.max()/span, span, 100*SERIES_TOL,
+                           100*noise.max()/span), counts=False)
 
 
 def smoothed(t, c, at, window):
@@ -276,7 +291,10 @@ def main(argv=None):
           % (ref.wall/run.wall, ref.cpu/run.cpu, ref.steps/run.steps))
     rc = 0
     for check in guard(ref, run):
-        rc |= report(check.ok, check.text)
+        if check.counts:
+            rc |= report(check.ok, check.text)
+        else:
+            print("INFO %s" % check.text)
     return rc
 
 
