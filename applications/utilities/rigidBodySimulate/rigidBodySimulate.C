@@ -116,8 +116,29 @@ void checkEndTime(const Time& runTime)
 }
 
 
+// A dictionary with an aerodynamics block whose loads are not aerodynamics
+// (bodyLoad absent, patchLoad, vacuum or fluidLoad off): the block is not
+// used, say so (the user who wrote it expects it used)
+void warnUnusedAerodynamics(const dictionary& modelDict, const word& type)
+{
+    if (type != "aerodynamics" && modelDict.found("aerodynamics"))
+    {
+        IOWarningInFunction(modelDict)
+            << "The aerodynamics block of " << modelDict.name()
+            << " is not used: the loads are " << type << " (bodyLoad "
+            << modelDict.getOrDefault<word>("bodyLoad", "patchLoad (absent)")
+            << ", fluidLoad "
+            << modelDict.getOrDefault<Switch>("fluidLoad", true)
+            << "; patchLoad needs the flow).  To fly with the quasi-steady"
+            << " wings: -bodyLoad aerodynamics, or bodyLoad aerodynamics;"
+            << " in the dictionary" << endl;
+    }
+}
+
+
 // The bodies' loads: -bodyLoad TYPE, else the dictionary's bodyLoad when it
-// needs no flow (patchLoad does: then none, as with fluidLoad off)
+// needs no flow (patchLoad does: then none, as with fluidLoad off; an unused
+// aerodynamics block is warned about)
 struct appliedLoads
 {
     autoPtr<bodyLoad> load;
@@ -139,7 +160,10 @@ struct appliedLoads
         {
             type = "vacuum";
         }
-        args.readIfPresent("bodyLoad", type);
+        if (!args.readIfPresent("bodyLoad", type))
+        {
+            warnUnusedAerodynamics(modelDict, type);
+        }
         if (type == "patchLoad")
         {
             FatalErrorInFunction
