@@ -31,7 +31,10 @@ Description
         value, positive ones and their absence accepted;
       - functionObjectKeys: an unknown key named with the allowed ones, the
         standard keys of a function object accepted;
-      - runProgress::duration: seconds, minutes, hours.
+      - runProgress::duration: seconds, minutes, hours;
+      - runProgress's cycleMotion found under imposedMotion or the paper
+        authors' ImposedMotion (both: the error of the motions' list; none:
+        "no such entry").
 
 \*---------------------------------------------------------------------------*/
 
@@ -39,6 +42,7 @@ Description
 #include "functionObjectKeys.H"
 #include "dictionaryKeys.H"
 #include "runProgress.H"
+#include "scratchTime.H"
 #include "IStringStream.H"
 #include "OSspecific.H"
 
@@ -202,6 +206,47 @@ TEST(functionObjectKeys, unknownAndStandardKeys)
     EXPECT_NE(only.find("allowed keys are rhoInf Uref"), std::string::npos)
         << only;
     EXPECT_EQ(only.find("every function object"), std::string::npos) << only;
+}
+
+
+//- The cycle period of runProgress with cycleMotion flapping, read from
+//- a constant/dynamicMeshDict whose motions are under the given keys
+//- (both: the error); the error message, empty if it constructed
+std::string cycleMotionError(const wordList& keys)
+{
+    scratchTime runTime("flapFoamTest-runProgress", 1, 1);
+    mkDir(runTime.dir()/"constant");
+    std::ofstream os((runTime.dir()/"constant"/"dynamicMeshDict").c_str());
+    os  << "FoamFile { version 2.0; format ascii; class dictionary;"
+        << " object dynamicMeshDict; }\n"
+        << "motionSolver eABAMeshMotion;\neABAMeshMotionCoeffs\n{\n";
+    for (const word& key : keys)
+    {
+        os  << key << " { flapping { type wang; frequency 20; } }\n";
+    }
+    os  << "}\n";
+    os.close();
+
+    dictionary dict;
+    dict.add("cycleMotion", "flapping");
+    return ioErrorOf([&]{ functionObjects::runProgress("p", runTime(), dict); });
+}
+
+
+TEST(runProgress, cycleMotionInEitherSpelling)
+{
+    // flapFoam's spelling and the paper authors'
+    EXPECT_EQ(cycleMotionError(wordList({"imposedMotion"})), "");
+    EXPECT_EQ(cycleMotionError(wordList({"ImposedMotion"})), "");
+
+    const std::string both(cycleMotionError(wordList({"imposedMotion",
+        "ImposedMotion"})));
+    EXPECT_NE(both.find("Both 'imposedMotion' and 'ImposedMotion'"),
+        std::string::npos) << both;
+
+    const std::string none(cycleMotionError(wordList()));
+    EXPECT_NE(none.find("cycleMotion flapping: no such entry"),
+        std::string::npos) << none;
 }
 
 

@@ -22,31 +22,9 @@ License
 
 #include "imposedMotionList.H"
 #include "StringStream.H"
+#include "imposedMotionKey.H"
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-Foam::word Foam::imposedMotionList::findKey(const dictionary& modelDict)
-{
-    // flapFoam's spelling and the paper authors' (their rigidBodyModel reads
-    // ImposedMotion)
-    const word ours("imposedMotion");
-    const word theirs("ImposedMotion");
-
-    const bool haveOurs = modelDict.found(ours, keyType::LITERAL);
-    const bool haveTheirs = modelDict.found(theirs, keyType::LITERAL);
-
-    if (haveOurs && haveTheirs)
-    {
-        FatalIOErrorInFunction(modelDict)
-            << "Both '" << ours << "' and '" << theirs << "' are present:"
-            << " give the prescribed motions in one of them (" << theirs
-            << " is the paper authors' spelling of " << ours << ")" << nl
-            << exit(FatalIOError);
-    }
-
-    return haveOurs ? ours : haveTheirs ? theirs : word::null;
-}
-
 
 void Foam::imposedMotionList::readMotions
 (
@@ -233,7 +211,7 @@ Foam::imposedMotionList::imposedMotionList
     localI_(),
     blends_()
 {
-    const word key(findKey(modelDict));
+    const word key(imposedMotionKey(modelDict));
 
     if (key.empty())
     {

@@ -21,6 +21,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "runProgress.H"
+#include "imposedMotionKey.H"
 #include "functionObjectKeys.H"
 #include "addToRunTimeSelectionTable.H"
 #include "IOdictionary.H"
@@ -88,13 +89,15 @@ Foam::scalar Foam::functionObjects::runProgress::motionPeriod
         )
     );
     const word solver(meshDict.getOrDefault<word>("motionSolver", "none"));
-    const dictionary* motions =
-        meshDict.optionalSubDict(solver + "Coeffs").findDict("imposedMotion");
+    const dictionary& coeffs = meshDict.optionalSubDict(solver + "Coeffs");
+    const word key(imposedMotionKey(coeffs));
+    const dictionary* motions = key.empty() ? nullptr : coeffs.findDict(key);
     if (!motions || !motions->isDict(entry))
     {
         FatalIOErrorInFunction(meshDict)
             << type() << " " << name() << ": cycleMotion " << entry
-            << ": no such entry in " << solver << "Coeffs/imposedMotion"
+            << ": no such entry in " << solver << "Coeffs/"
+            << (key.empty() ? word("imposedMotion") : key)
             << " (entries: "
             << (motions ? motions->toc() : wordList()) << ");"
             << " name one of them, or give the period instead"
