@@ -87,14 +87,14 @@ void Foam::fv::pimpleTimers::constrain
 
 void Foam::fv::pimpleTimers::correct(volVectorField& U)
 {
-    const bool predictor =
-        mesh_.solutionDict().subOrEmptyDict("PIMPLE")
+    // The first correction after the assembly ends the momentum solve,
+    // unless there is none (no momentum predictor)
+    const bool momentum =
+        nCorrections_ == 0
+     && mesh_.solutionDict().subOrEmptyDict("PIMPLE")
        .getOrDefault<bool>("momentumPredictor", true);
 
-    timers_.lap
-    (
-        nCorrections_ == 0 && predictor ? momentumPart : pressurePart
-    );
+    timers_.lap(momentum ? momentumPart : pressurePart);
     timers_.trailingLap(turbulencePart);
     ++nCorrections_;
 }
