@@ -35,22 +35,18 @@ Exit status 1 if any judged check fails.
 
 import argparse
 import dataclasses
-import glob
 import math
 import os
-import re
 import sys
 
 import numpy as np
 
 from flapfoam import flightData
+from flapfoam import solverLog
 from flapfoam import stepTimers
 from flapfoam.checks import report
 from flapfoam.foamDict import multibodyCoeffs
 from flapfoam.plotSingleWing import coefficients, referenceValues
-from flapfoam.tables import timeValue
-
-LOG = "log.overPimpleDyMFoam"
 
 # The guard's margins (issue 25)
 MEAN_TOL = 0.01         # cycle means, of the larger mean magnitude
@@ -87,46 +83,6 @@ class Cycles:
         return float(np.interp(self.t1, self.tq, q))
 
 
-def read_log(path):
-    """Per step of one solver log: (time, last 'sum local', p iterations,
-    CPU seconds of the step: the ExecutionTime increment)."""
-    rows = []
-    time_re = re.compile(r"^Time = (\S+)")
-    cpu = 0.0
-    with open(path) as fh:
-        for line in fh:
-            m = time_re.match(line)
-            if m:
-                rows.append([float(m.group(1)), math.nan, 0, math.nan])
-            elif not rows:
-                continue
-            elif "continuity errors : sum local" in line:
-                rows[-1][1] = float(line.split("=")[1].split(",")[0])
-            elif "Solving for p," in line:
-                rows[-1][2] += int(line.rsplit(None, 1)[1])
-            elif line.startswith("ExecutionTime"):
-                now = float(line.split()[2])
-                rows[-1][3], cpu = now - cpu, now
-    return rows
-
-
-def log_steps(case):
-    """The steps of the run's solver logs (log.overPimpleDyMFoam and the
-    restarts' log.overPimpleDyMFoam.<time>): a later log replaces the
-    steps of the earlier ones from its first time on."""
-    logs = [os.path.join(case, LOG)] + sorted(
-        glob.glob(os.path.join(case, LOG + ".*")),
-        key=lambda f: timeValue(os.path.basename(f)[len(LOG) + 1:], 0.0))
-    rows = []
-    for path in logs:
-        if not os.path.isfile(path):
-            continue
-        more = read_log(path)
-        if more:
-            rows = [r for r in rows if r[0] < more[0][0]] + more
-    return np.array(rows) if rows else np.zeros((0, 4))
-
-
 def read_run(case, n_cycles):
     """The run's Cycles over its first n_cycles cycles."""
     ref = referenceValues(multibodyCoeffs(
@@ -145,7 +101,7 @@ def read_run(case, n_cycles):
     if J[-1, 0] < run.t1*(1 - 1e-9):
         sys.exit("pimpleGuard: %s reached t = %g s, not the end of %g "
                  "cycle(s), %g s" % (case, J[-1, 0], n_cycles, run.t1))
-    steps = log_steps(case)
+    steps = solverLog.steps(case)
     sel = (steps[:, 0] > t0) & (steps[:, 0] <= run.t1*(1 + 1e-9))
     run.steps = int(sel.sum())
     run.continuity = float(np.nansum(steps[sel, 1]))

@@ -33,7 +33,8 @@ import tempfile
 
 import numpy as np
 
-from flapfoam import rankTables, scalingModel, stepTimers, timedRounds
+from flapfoam import (rankTables, scalingModel, solverLog, stepTimers,
+                      timedRounds)
 
 STENCILS = {"octree": scalingModel.OCTREE, "ID": scalingModel.STOCK}
 LEVELS = ("coarse", "medium", "fine")
@@ -145,10 +146,7 @@ def read_ping_pong(fname):
 def pressure_iterations(log, startup):
     """Mean over the steps after STARTUP of the p solves' iterations per
     step."""
-    with open(log, errors="replace") as f:
-        steps = f.read().split("\nTime = ")[1:]
-    counts = [sum(int(n) for n in re.findall(
-        r"Solving for p,.*No Iterations (\d+)", s)) for s in steps]
+    counts = [row[2] for row in solverLog.read_log(log)]
     return float(np.mean(counts[startup:]))
 
 
