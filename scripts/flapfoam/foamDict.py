@@ -54,7 +54,9 @@ def readFoamDict(path):
 
 
 def readState(path):
-    """{q, qDot, qDdot: arrays, t: float} of a rigidBodyMotionState."""
+    """{q, qDot, qDdot: arrays, t: float} of a rigidBodyMotionState; an
+    entry the file lacks (a hand-written state: no qDdot, no t) is not in
+    the result."""
     with open(path) as f:
         text = f.read()
     text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
@@ -64,9 +66,11 @@ def readState(path):
         m = re.search(r"\b%s\s+\d+\s*\(([^)]*)\)\s*;" % key, text)
         if m is None:
             m = re.search(r"\b%s\s+\(([^)]*)\)\s*;" % key, text)
-        state[key] = np.array(m.group(1).split(), dtype=float)
+        if m is not None:
+            state[key] = np.array(m.group(1).split(), dtype=float)
     m = re.search(r"\bt\s+([^;\s]+)\s*;", text)
-    state["t"] = float(m.group(1))
+    if m is not None:
+        state["t"] = float(m.group(1))
     return state
 
 

@@ -28,8 +28,10 @@ Group
 Description
     Runs a multibody model with prescribed joints (eABA) without a mesh:
     gravity, restraints and the loads that need no flow (bodyLoad vacuum or
-    aerodynamics: quasi-steady wings, evaluated at every sub-iteration from
-    the current state).  The same model and the same dictionaries as the
+    aerodynamics: quasi-steady wings, evaluated at the predicted state and
+    at each correction's, so that the step is second order; with
+    -staggeredLoads once a step at the state of its start, as the overset
+    solver takes the flow's load: first order).  The same model and the same dictionaries as the
     overset mesh motion solver, so the dynamics can be checked quickly and
     a drone flown with quasi-steady wings.
 
@@ -75,7 +77,7 @@ Description
 
 Usage
     \b rigidBodySimulate [-case DIR] [-dict FILE] [-solver NAME]
-        [-bodyLoad vacuum|aerodynamics] [-noFunctionObjects]
+        [-bodyLoad vacuum|aerodynamics] [-staggeredLoads] [-noFunctionObjects]
 
 \*---------------------------------------------------------------------------*/
 
@@ -144,6 +146,10 @@ struct appliedLoads
     autoPtr<bodyLoad> load;
     Field<spatialVector> fx;
 
+    //- -staggeredLoads: the loads once a step, of the state at its start
+    //- (as the flow's in the overset solver), not of each estimate
+    const bool staggered;
+
     appliedLoads
     (
         const Time& runTime,
@@ -152,7 +158,8 @@ struct appliedLoads
         const argList& args
     )
     :
-        fx(model.nBodies(), Zero)
+        fx(model.nBodies(), Zero),
+        staggered(args.found("staggeredLoads"))
     {
         const bool fluid = modelDict.getOrDefault<Switch>("fluidLoad", true);
         word type(modelDict.getOrDefault<word>("bodyLoad", "patchLoad"));
@@ -178,6 +185,7 @@ struct appliedLoads
         load = bodyLoad::New(runTime, model, dict);
         Info<< "Loads: " << type
             << (type == "vacuum" ? " (gravity and restraints only)" : "")
+            << (staggered ? ", once a step: of the state at its start" : "")
             << nl << endl;
     }
 
@@ -375,15 +383,22 @@ void timeLoop
             stepTimers::scope timer(timers, "rbd");
 
             model.newTime();
+            if (loads.staggered)
+            {
+                loads.of(model.state());
+            }
+            model.predict(runTime.value(), runTime.deltaTValue());
             for (label iter = 0; iter < model.nIter(); ++iter)
             {
-                // The loads of the current estimate of the new state
+                // The loads of the current estimate of the new state (the
+                // predicted one, then the last correction's), or those of
+                // the step's start
                 model.solve
                 (
                     runTime.value(),
                     runTime.deltaTValue(),
                     tau,
-                    loads.of(model.state())
+                    loads.staggered ? loads.fx : loads.of(model.state())
                 );
             }
         }
@@ -412,6 +427,14 @@ int main(int argc, char *argv[])
     );
     argList::noParallel();
     multibodyDict::addOptions();
+    argList::addBoolOption
+    (
+        "staggeredLoads",
+        "the loads once a step, of the state at its start, as the flow's"
+        " load in the overset solver (explicit coupling: first order in the"
+        " loads' change over a step); default: the loads of each estimate"
+        " of the new state (second order)"
+    );
     argList::addOption
     (
         "bodyLoad",

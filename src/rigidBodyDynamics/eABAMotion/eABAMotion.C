@@ -189,6 +189,7 @@ Foam::RBD::eABAMotion::eABAMotion
     aDamp_(1),
     report_(false),
     freshStart_(!isRestart(stateDict)),
+    predicted_(false),
     solver_(nullptr),
     controller_(nullptr),
     qDdotPrev_(nDoF(), Zero)
@@ -269,6 +270,7 @@ Foam::spatialTransform Foam::RBD::eABAMotion::X00(const label bodyID) const
 void Foam::RBD::eABAMotion::newTime()
 {
     motionState0_ = motionState_;
+    predicted_ = false;
 
     if (controller_.valid() && controller_->due(motionState_.t()))
     {
@@ -348,6 +350,31 @@ void Foam::RBD::eABAMotion::evaluate
 }
 
 
+void Foam::RBD::eABAMotion::scatterState()
+{
+    Pstream::scatter(motionState_);
+    Pstream::scatter(tauPrescribed_);
+
+    forwardDynamicsCorrection(motionState_);
+}
+
+
+void Foam::RBD::eABAMotion::predict(const scalar t, const scalar deltaT)
+{
+    motionState_.t() = t;
+    motionState_.deltaT() = deltaT;
+
+    if (Pstream::master())
+    {
+        solver_->predict();
+        impose(motionState_);
+    }
+
+    scatterState();
+    predicted_ = true;
+}
+
+
 void Foam::RBD::eABAMotion::solve
 (
     const scalar t,
@@ -356,15 +383,13 @@ void Foam::RBD::eABAMotion::solve
     const Field<spatialVector>& fx
 )
 {
+    if (!predicted_)
+    {
+        predict(t, deltaT);
+    }
+
     motionState_.t() = t;
     motionState_.deltaT() = deltaT;
-
-    // First step: no previous step size
-    if (motionState0_.deltaT() < SMALL)
-    {
-        motionState0_.t() = t;
-        motionState0_.deltaT() = deltaT;
-    }
 
     if (Pstream::master())
     {
@@ -372,10 +397,7 @@ void Foam::RBD::eABAMotion::solve
         impose(motionState_);
     }
 
-    Pstream::scatter(motionState_);
-    Pstream::scatter(tauPrescribed_);
-
-    forwardDynamicsCorrection(motionState_);
+    scatterState();
 }
 
 

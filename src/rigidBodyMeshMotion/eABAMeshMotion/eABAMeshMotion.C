@@ -346,11 +346,19 @@ void Foam::eABAMeshMotion::solve()
         curTimeIndex_ = t.timeIndex();
     }
 
-    // The loads of the state at the start of the step
+    // The predicted state, then the corrections.  The flow's load is that
+    // of the flow's time, the start of the step, once a step (the coupled
+    // step is explicit in it: first order in its change over a step); a
+    // load of the state (quasi-steady wings) that of each estimate.
+    model_.predict(t.value(), t.deltaTValue());
     load_->loads(model_.state(), fx_);
 
     for (label iter = 0; iter < model_.nIter(); ++iter)
     {
+        if (iter && load_->stateDependent())
+        {
+            load_->loads(model_.state(), fx_);
+        }
         model_.solve(t.value(), t.deltaTValue(), tau_, fx_);
     }
 

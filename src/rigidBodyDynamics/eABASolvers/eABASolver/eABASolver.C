@@ -98,6 +98,18 @@ void Foam::RBD::eABASolver::correctQuaternionJoints()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::RBD::eABASolver::predict()
+{
+    const scalar dt = deltaT();
+
+    q() = q0() + dt*qDot0() + 0.5*sqr(dt)*qDdot0();
+    qDot() = qDot0() + dt*qDdot0();
+    qDdot() = qDdot0();
+
+    correctQuaternionJoints();
+}
+
+
 void Foam::RBD::eABASolver::write(Ostream& os) const
 {
     os.writeEntry("type", type());

@@ -46,7 +46,9 @@ Foam::RBD::eABASolvers::symplectic::symplectic
     const dictionary& dict
 )
 :
-    eABASolver(model)
+    eABASolver(model),
+    qDotNew_(model.nDoF(), Zero),
+    qDotHalf_(model.nDoF(), Zero)
 {}
 
 
@@ -58,13 +60,20 @@ void Foam::RBD::eABASolvers::symplectic::solve
     const Field<spatialVector>& fx
 )
 {
-    // Half-step velocity and full-step position
-    qDot() = qDot0() + 0.5*deltaT0()*qDdot();
-    q() = q0() + deltaT()*qDot();
+    const scalar dt = deltaT();
+
+    // The estimate of the new velocity (the predictor's or the last
+    // correction's): the velocity the new accelerations are evaluated at
+    qDotNew_ = qDot();
+
+    // Half-step velocity and full-step position from the previous state
+    qDotHalf_ = qDot0() + 0.5*dt*qDdot0();
+    q() = q0() + dt*qDotHalf_;
 
     correctQuaternionJoints();
 
     // Exact prescribed state, then the body state for the restraints
+    qDot() = qDotNew_;
     model_.impose(state());
     model_.forwardDynamicsCorrection(state());
 
@@ -72,7 +81,7 @@ void Foam::RBD::eABASolvers::symplectic::solve
     model_.forwardDynamics(state(), rtau_, rfx_);
 
     // Second half-step of the velocity
-    qDot() += 0.5*deltaT()*qDdot();
+    qDot() = qDotHalf_ + 0.5*dt*qDdot();
 }
 
 
