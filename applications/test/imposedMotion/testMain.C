@@ -22,7 +22,7 @@ Application
     flapFoamTest-imposedMotion
 
 Description
-    GoogleTest unit tests of libimposedMotion, one file per class
+    GoogleTest unit tests of libflapFoamImposedMotion, one file per class
     (Test-<class>.C, helpers in imposedMotionTests.H):
       - every motion type: the exact qDot, qDdot against central finite
         differences of q, qDot over two periods (negative times included),
