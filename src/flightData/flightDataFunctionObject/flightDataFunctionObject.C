@@ -234,10 +234,11 @@ Foam::functionObjects::flightData::attributes(const scalar startTime) const
     }
     a.append(Tuple2<word, string>("decomposition", decomposition));
 
+    // The commit: git on the master only (only it writes the file)
     const fileName projectDir(getEnv("FLAPFOAM_PROJECT_DIR"));
     string commit
     (
-        projectDir.size()
+        Pstream::master() && projectDir.size()
       ? firstLine
         (
             "git -C '" + projectDir + "' rev-parse HEAD 2>/dev/null"
