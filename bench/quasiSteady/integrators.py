@@ -57,7 +57,7 @@ def main():
         xN, zN, _, _ = runs[("Newmark", 3)]
         summary.append(
             "%d steps per cycle (deltaT %.3g s): the largest difference from"
-            " Newmark nIter 3 is %.3f %% in x and %.3f %% in z (paper:"
+            " Newmark nIter 3 is %.2g %% in x and %.2g %% in z (paper:"
             " within 1 %%)." % (n, 1/(n*runs[("Newmark", 3)][3]),
                                max(100*abs(x - xN)/abs(xN)
                                    for x, _, _, _ in runs.values()),
@@ -65,8 +65,8 @@ def main():
                                    for _, z, _, _ in runs.values())))
         for (s, i), (x, z, sec, _) in runs.items():
             lines.append(
-                "| %s | %d | %d | %.3f | %.3f | %+.4f (%.3f) | %+.4f (%.3f)"
-                " | %.3f | %.3f | %.2f |"
+                "| %s | %d | %d | %.4f | %.4f | %+.2e (%.2g) | %+.2e (%.2g)"
+                " | %.2g | %.2g | %.2f |"
                 % (s, i, n, 1e3*x, 1e3*z, 1e3*(x - xN),
                    100*abs(x - xN)/abs(xN), 1e3*(z - zN),
                    100*abs(z - zN)/abs(zN), 100*abs(x - xRef)/abs(xRef),
