@@ -276,7 +276,7 @@ def _mark(value, limit, fmt, scale=1):
 
 def tables(data):
     lines = ["# Scaling bench: where a step goes from 2 to 48 ranks", "",
-             "`bench/scaling/run` (README, bench/scaling). Counted: exact "
+             "`bench/scaling/run` (docs/benches.md). Counted: exact "
              "figures of each decomposition (structure, traffic); timed: "
              "this 2-core machine; model: `scripts/flapfoam/scalingModel.py`"
              " (its assumptions are in its header)."]

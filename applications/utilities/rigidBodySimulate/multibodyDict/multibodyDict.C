@@ -221,7 +221,7 @@ void Foam::multibodyDict::checkKeys() const
             << " is not flapFoam's (eABAMeshMotion): rigidBodySimulate runs"
             << " its multibody model without a mesh and ignores the keys"
             << listed(unused).c_str()
-            << " (README: Coming from the paper's code)" << endl;
+            << " (docs/paperCode.md)" << endl;
     }
 
     reportOtherSolvers();

@@ -118,7 +118,7 @@ Foam::imposedMotions::wangParametrization::readMotionType
                  ? " (python3 -m flapfoam.authorsControl <this file> writes"
                    " the equivalent imposedMotion and controller entries)"
                  : controller
-                 ? " (README: Closed-loop flight)"
+                 ? " (docs/control.md)"
                  : ""
                )
             << ": allowed" << allowed.str().c_str()
