@@ -1,0 +1,76 @@
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
+"""The quasi-steady reference's blade elements (flapfoam.quasiSteady), the
+wing's geometry and the mesh levels (wingGeometry, wingMesh)."""
+
+import math
+
+import numpy as np
+import pytest
+
+from flapfoam import wingGeometry as geo
+from flapfoam.backgroundMesh import BACKGROUND, backgroundCellSize
+from flapfoam.quasiSteady import Wing
+from flapfoam.wingMesh import LEVELS
+
+
+def wing(**extra):
+    entry = {"length": ["0.05"], "nStrips": ["400"],
+             "chordDistribution": ["semiElliptic"], "meanChord": ["0.015"],
+             "span": ["(", "0", "1", "0", ")"],
+             "chord": ["(", "1", "0", "0", ")"],
+             "root": ["(", "0", "0.0225", "0", ")"], "rho": ["1.2"]}
+    entry.update({k: [v] for k, v in extra.items()})
+    return Wing(entry)
+
+
+def test_strips_cover_the_semi_elliptic_planform():
+    w = wing()
+    assert w.area.sum() == pytest.approx(geo.planformArea(), rel=1e-4)
+    assert geo.planformArea() == pytest.approx(geo.R*geo.CBAR, rel=1e-15)
+
+
+def test_no_force_at_rest_in_still_air():
+    F, M = wing().force(np.eye(3), np.zeros(3), np.zeros(3), np.zeros(3))
+    assert np.all(F == 0) and np.all(M == 0)
+
+
+def test_flow_along_the_chord_is_pure_drag_cd0():
+    w = wing(CD0="0.4")
+    U = 3.0
+    # the wing moves along -chord: the air comes along +chord
+    F, _ = w.force(np.eye(3), np.zeros(3), np.array([-U, 0, 0]), np.zeros(3))
+    q = 0.5*1.2*U**2*w.area.sum()
+    assert F[0] == pytest.approx(0.4*q, rel=1e-12)
+    assert abs(F[1]) < 1e-15 and abs(F[2]) < 1e-15
+
+
+def test_lift_at_45_degrees_is_normal_to_the_flow_and_scales_with_u2():
+    w = wing(CL="1.2", CD0="0.4", CD1="1.0")
+    v = np.array([-1.0, 0, -1.0])/math.sqrt(2)       # air from 45 deg
+    F1, _ = w.force(np.eye(3), np.zeros(3), v, np.zeros(3))
+    F2, _ = w.force(np.eye(3), np.zeros(3), 2*v, np.zeros(3))
+    assert F2 == pytest.approx(4*F1, rel=1e-12)
+    q = 0.5*1.2*w.area.sum()
+    drag = F1 @ (-v)
+    lift = np.linalg.norm(F1 - drag*(-v))
+    assert lift == pytest.approx(1.2*q, rel=1e-12)          # CL sin(2 alpha)
+    assert drag == pytest.approx((0.4 + 1.0)*q, rel=1e-12)  # CD0 + CD1
+
+
+def test_radius_of_gyration_closed_form_equals_quadrature():
+    assert geo.radiusOfGyration() == pytest.approx(
+        geo.radiusOfGyrationQuadrature(), rel=1e-8)
+
+
+def test_levels_refine_in_order():
+    order = ["tiny", "coarse", "medium", "fine", "finePlus"]
+    h = [backgroundCellSize(LEVELS[n], BACKGROUND) for n in order]
+    assert all(a > b for a, b in zip(h, h[1:]))
+    assert h[1] == pytest.approx(0.3/(12*2**3))           # coarse: 3.13 mm
+    for key in ("nS", "nL", "nC"):
+        assert [LEVELS[n][key] for n in order] == sorted(
+            LEVELS[n][key] for n in order)
+    ds = [LEVELS[n]["dsE"] for n in order]
+    assert ds == sorted(ds, reverse=True)
