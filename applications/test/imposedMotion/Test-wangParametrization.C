@@ -290,7 +290,7 @@ TEST(Errors, WangParametrizationBadInput)
         wangParametrizationText("motionType midStartControl_z_PD;"),
         {
             "'motionType'", "midStartControl_z_PD", "flight controller",
-            "not a motion type of flapFoam", "Closed-loop flight",
+            "not a motion type of flapFoam", "docs/control.md",
             "standard", "midStart", "midStart_2wings"
         }
     );
