@@ -30,6 +30,11 @@ sys.path.insert(0, os.environ.get("FLAPFOAM_PROJECT_DIR", os.path.join(
 from flapfoam import stepTimers  # noqa: E402
 
 
+# The stock solver with the paper's settings (-settings): the reference of
+# the "step: stock / this" column
+STOCK = "inverseDistance+paper+stockInterpolation"
+
+
 def median_columns(case, startup):
     columns, data = stepTimers.read_input(
         os.path.join(case, "postProcessing", "stepTimers"), startup)
@@ -38,13 +43,13 @@ def median_columns(case, startup):
 
 
 def readRows(folder, runs, startup):
-    """One row per configuration (level, ranks, stencil): the medians over
+    """One row per configuration (level, ranks, stencil or stencil+settings:
+    the run's name level-np<N>-<configuration>-r<round>): the medians over
     the rounds of the per-run medians, the overset range, peak memory."""
     # Per configuration, the per-run medians of every round
     groups = {}
     for run in runs:
-        parts = run.split("-")
-        level, np_, stencil = parts[0], parts[1], parts[2]
+        level, np_, stencil = run.rsplit("-r", 1)[0].split("-", 2)
         med, n = median_columns(os.path.join(folder, run), startup)
         with open(os.path.join(folder, run + ".memory")) as f:
             mem = float(f.read().split()[0])
@@ -70,6 +75,14 @@ def table(rows, startup):
             if r["stencil"] == "inverseDistance"}
     tracking = {(r["level"], r["np"]): r for r in rows
                 if r["stencil"] == "trackingInverseDistance"}
+    stock = {(r["level"], r["np"]): r for r in rows
+             if r["stencil"] == STOCK}
+
+    def stock_ratio(r):
+        """The stock solver's step (STOCK) over r's"""
+        ref = stock.get((r["level"], r["np"]))
+        return "%.2f" % (ref["med"]["total"]/r["med"]["total"]) if ref \
+            else "-"
 
     def speedup(ref, r):
         """Stencil update with the motion: ref's time over r's"""
@@ -92,16 +105,19 @@ def table(rows, startup):
         "stencil update with the mesh motion (`oversetMovePoints`: the "
         "stock stencils have no timer of their own inside it) of "
         "inverseDistance (ID) or trackingInverseDistance (tracking) over "
-        "this run's.  With several rounds: medians over the rounds, and "
+        "this run's.  step: stock / this: the whole step of the stock "
+        "solver with the paper's settings (%s, run with "
+        "-settings) over this configuration's.  With several rounds: "
+        "medians over the rounds, and "
         "the overset range over the rounds."
-        % startup,
+        % (startup, STOCK),
         "",
         "| level | ranks | stencil | steps x rounds | rbd [s] | "
         "overset [s] (range) | stencil+motion [s] | pimple [s] | total [s] "
         "| overset share | peak memory [MiB] | speed-up vs ID | speed-up vs "
-        "tracking | memory vs ID |",
+        "tracking | memory vs ID | step: stock / this |",
         "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
-        "---:|",
+        "---:|---:|",
     ]
     for r in rows:
         m = r["med"]
@@ -110,13 +126,13 @@ def table(rows, startup):
         mratio = "%.2f" % (r["mem"]/b["mem"]) if b else "-"
         lines.append(
             "| %s | %d | %s | %d x %d | %.4f | %.3f (%.3f-%.3f) | %.3f | "
-            "%.3f | %.3f | %.0f %% | %.0f | %s | %s | %s |" % (
+            "%.3f | %.3f | %.0f %% | %.0f | %s | %s | %s | %s |" % (
                 r["level"], r["np"], r["stencil"], r["n"], r["rounds"],
                 m["rbd"], m["overset"], r["spread"][0], r["spread"][1],
                 m.get("oversetMovePoints", float("nan")),
                 m["pimple"], m["total"], 100*m["overset"]/m["total"],
                 r["mem"], speedup(b, r), speedup(tracking.get(key), r),
-                mratio))
+                mratio, stock_ratio(r)))
     lines += pimple_table(rows)
     lines += [
         "",
