@@ -146,9 +146,10 @@ struct appliedLoads
     autoPtr<bodyLoad> load;
     Field<spatialVector> fx;
 
-    //- -staggeredLoads: the loads once a step, of the state at its start
-    //- (as the flow's in the overset solver), not of each estimate
-    const bool staggered;
+    //- The loads of each estimate of the new state (a load of the state,
+    //- bodyLoad::stateDependent, without -staggeredLoads), or once a step,
+    //- of the state at its start (as the flow's in the overset solver)
+    bool eachEstimate;
 
     appliedLoads
     (
@@ -159,7 +160,7 @@ struct appliedLoads
     )
     :
         fx(model.nBodies(), Zero),
-        staggered(args.found("staggeredLoads"))
+        eachEstimate(false)
     {
         const bool fluid = modelDict.getOrDefault<Switch>("fluidLoad", true);
         word type(modelDict.getOrDefault<word>("bodyLoad", "patchLoad"));
@@ -183,6 +184,8 @@ struct appliedLoads
         dict.set("bodyLoad", type);
         dict.set("fluidLoad", true);
         load = bodyLoad::New(runTime, model, dict);
+        const bool staggered = args.found("staggeredLoads");
+        eachEstimate = load->stateDependent() && !staggered;
         Info<< "Loads: " << type
             << (type == "vacuum" ? " (gravity and restraints only)" : "")
             << (staggered ? ", once a step: of the state at its start" : "")
@@ -382,23 +385,23 @@ void timeLoop
         {
             stepTimers::scope timer(timers, "rbd");
 
+            // The loads of the step's start, or of each estimate of the
+            // new state (the predicted one, then the last correction's)
             model.newTime();
-            if (loads.staggered)
+            if (!loads.eachEstimate)
             {
                 loads.of(model.state());
             }
             model.predict(runTime.value(), runTime.deltaTValue());
             for (label iter = 0; iter < model.nIter(); ++iter)
             {
-                // The loads of the current estimate of the new state (the
-                // predicted one, then the last correction's), or those of
-                // the step's start
+                if (loads.eachEstimate)
+                {
+                    loads.of(model.state());
+                }
                 model.solve
                 (
-                    runTime.value(),
-                    runTime.deltaTValue(),
-                    tau,
-                    loads.staggered ? loads.fx : loads.of(model.state())
+                    runTime.value(), runTime.deltaTValue(), tau, loads.fx
                 );
             }
         }
