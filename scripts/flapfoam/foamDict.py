@@ -2,11 +2,13 @@
 #     This file is part of flapFoam, derived from OpenFOAM: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """
-Minimal OpenFOAM dictionary reader (enough for dynamicMeshDict) and the
-rigidBodyMotionState of a time folder.  numpy only.
+Minimal OpenFOAM dictionary reader (enough for dynamicMeshDict), the
+rigidBodyMotionState of a time folder, and an entry set or removed by
+OpenFOAM's foamDictionary.  numpy only.
 """
 
 import re
+import subprocess
 
 import numpy as np
 
@@ -79,3 +81,13 @@ def multibodyCoeffs(path):
     eABAMeshMotionCoeffs, else the whole dictionary."""
     d = readFoamDict(path)
     return d.get("eABAMeshMotionCoeffs", d)
+
+
+def setEntry(path, entry, value):
+    """foamDictionary -set ENTRY VALUE (value None: -remove) on the file.
+    foamDictionary writes the whole file again: at 17 digits, not at its
+    default 6, so that the other numbers stay as they were."""
+    action = ["-remove"] if value is None else ["-set", value]
+    subprocess.run(["foamDictionary", "-precision", "17", "-entry", entry]
+                   + action + [path], check=True, stdout=subprocess.DEVNULL)
+

@@ -46,7 +46,7 @@ import sys
 import numpy as np
 
 from flapfoam.chain_reference import Chain, Harmonic
-from flapfoam.foamDict import multibodyCoeffs, readState
+from flapfoam.foamDict import multibodyCoeffs, readState, setEntry
 from flapfoam.quasiSteady import SingleWingDrone
 from flapfoam.tables import readTable
 
@@ -120,15 +120,6 @@ class Run:
             self.system.name, self.solver, self.n_iter, self.delta_t))
 
 
-def foam_dictionary(path, entry, value):
-    """foamDictionary -set (or -remove for value None) on path (it writes
-    the whole file again: at full precision, not its default 6 digits)."""
-    action = ["-remove"] if value is None else ["-set", value]
-    subprocess.run(["foamDictionary", "-precision", "17", "-entry", entry]
-                   + action + [path],
-                   check=True, stdout=subprocess.DEVNULL)
-
-
 def set_up(run):
     """The run's case: the system's dictionary with the integrator set,
     its initial state if it has one, a controlDict."""
@@ -145,8 +136,8 @@ def set_up(run):
         os.makedirs(os.path.join(run.path, "0", "uniform"))
         shutil.copy(state, os.path.join(run.path, "0", "uniform"))
     prefix = run.system.coeffs
-    foam_dictionary(mesh_dict, prefix + "solver/type", run.solver)
-    foam_dictionary(mesh_dict, prefix + "nIter",
+    setEntry(mesh_dict, prefix + "solver/type", run.solver)
+    setEntry(mesh_dict, prefix + "nIter",
                     None if run.n_iter == "default" else run.n_iter)
     with open(os.path.join(run.path, "system", "controlDict"), "w") as f:
         f.write(CONTROL % {"end": run.system.end_time, "dt": run.delta_t,

@@ -60,7 +60,7 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
-from flapfoam.foamDict import readFoamDict
+from flapfoam.foamDict import readFoamDict, setEntry
 
 # name: (imposedMotion waveform or None, key, allowed (lo, hi) open range)
 PARAMETERS = {
@@ -199,9 +199,7 @@ class Model:
         return values
 
     def _set(self, entry, value):
-        subprocess.run(["foamDictionary", "-precision", "17", "-entry",
-                        self.prefix + entry, "-set", value, self.template],
-                       check=True, stdout=subprocess.DEVNULL)
+        setEntry(self.template, self.prefix + entry, value)
 
     def write(self, path, values):
         """The dictionary of one point (values: {name: value}, the
