@@ -20,7 +20,7 @@ License
     along with flapFoam (COPYING).  If not, see <http://www.gnu.org/licenses/>.
 
 Description
-    flapFoamTest-rigidBodyDynamics: the flight controller (libflapFoam
+    flapFoamTest-controllers: the flight controller (libflapFoam
     Controllers, type PID) inside eABAMotion, on the model restart with a
     controller of two loops (the shoulder's amplitude from the fuselage's
     height, tanh; its offset from link2's pitch, linear), updated at 50 Hz
