@@ -20,14 +20,11 @@ to inverseDistance) and PREFIX.png (stacked bars of the medians, and the peak me
 import argparse
 import os
 import platform
-import sys
 import time
 
 import numpy as np
 
-sys.path.insert(0, os.environ.get("FLAPFOAM_PROJECT_DIR", os.path.join(
-    os.path.dirname(os.path.abspath(__file__)), "../..")) + "/scripts")
-from flapfoam import stepTimers  # noqa: E402
+from flapfoam import stepTimers
 
 
 # The stock solver with the paper's settings (-settings): the reference of

@@ -28,9 +28,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.environ.get("FLAPFOAM_PROJECT_DIR", os.path.join(
-    os.path.dirname(os.path.abspath(__file__)), "../..")) + "/scripts")
-from flapfoam import rankTables  # noqa: E402
+from flapfoam import rankTables
 
 REPORT = "oversetCouplingsReport"
 

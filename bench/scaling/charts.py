@@ -9,11 +9,8 @@ remote acceptor and pair shares against ranks, every level) and PREFIX-<level>-4
 (the paper's bar chart: a step at 48 ranks per method, split)."""
 
 import os
-import sys
 
-sys.path.insert(0, os.environ.get("FLAPFOAM_PROJECT_DIR", os.path.join(
-    os.path.dirname(os.path.abspath(__file__)), "../..")) + "/scripts")
-from flapfoam.plotting import plt, save  # noqa: E402
+from flapfoam.plotting import plt, save
 
 METHODS = ["simple", "hierarchical", "scotch", "metis", "oversetGraph"]
 SHORT = {"inverseDistance": "ID", "octreeInverseDistance": "octree"}

@@ -24,18 +24,14 @@ import glob
 import os
 import platform
 import re
-import sys
 import time
 
 import numpy as np
 
-sys.path.insert(0, os.environ.get("FLAPFOAM_PROJECT_DIR", os.path.join(
-    os.path.dirname(os.path.abspath(__file__)), "../..")) + "/scripts")
-from flapfoam import (mpiCounts, rankTables, scalingModel,  # noqa: E402
+from flapfoam import (mpiCounts, rankTables, scalingModel,
                       scalingValidate, stepTimers)
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import charts  # noqa: E402
-import report  # noqa: E402
+import charts
+import report
 
 METHODS = ["simple", "hierarchical", "scotch", "metis", "oversetGraph"]
 STENCILS = ["inverseDistance", "octreeInverseDistance"]
@@ -46,11 +42,11 @@ def read_structure(folder, base):
     """{(method, P): Decomposition} of a level's structure folder."""
     mesh = None
     out = {}
-    for report in sorted(glob.glob(os.path.join(folder, "*-np*.report"))):
-        m = re.match(r"(\w+)-np(\d+)\.report$", os.path.basename(report))
-        table = rankTables.read_table(report, REPORT)
+    for path in sorted(glob.glob(os.path.join(folder, "*-np*.report"))):
+        m = re.match(r"(\w+)-np(\d+)\.report$", os.path.basename(path))
+        table = rankTables.read_table(path, REPORT)
         decomp = rankTables.read_decomposition(
-            report[:-len(".report")] + ".cellDecomposition")
+            path[:-len(".report")] + ".cellDecomposition")
         if mesh is None:
             mesh = os.path.join(base, "constant", "polyMesh")
         nbr = rankTables.neighbour_ranks(mesh, decomp)

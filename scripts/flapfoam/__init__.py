@@ -28,7 +28,8 @@ says so).  Only the plot modules import matplotlib.
     plotSingleWing  plots of a single-wing drone run
     plotBodyWing    plots of a body-wing drone run
 
-The entry scripts (scripts/*.py, cases/*/scripts/*.py) put the project's
-scripts/ folder on sys.path ($FLAPFOAM_PROJECT_DIR/scripts, set up by
-etc/bashrc, else found from their own location) and import from here.
+The package is found through PYTHONPATH, which etc/bashrc sets once
+($FLAPFOAM_PROJECT_DIR/scripts); no script edits sys.path.  Run a tool as
+python3 -m flapfoam.<tool>; the cases' and benches' scripts import from
+here.
 """

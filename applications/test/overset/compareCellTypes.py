@@ -21,10 +21,8 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.environ.get("FLAPFOAM_PROJECT_DIR", os.path.join(
-    os.path.dirname(os.path.abspath(__file__)), "../../..")) + "/scripts")
-from flapfoam import foamMesh  # noqa: E402
-from flapfoam.tables import timeValue  # noqa: E402
+from flapfoam import foamMesh
+from flapfoam.tables import timeValue
 
 
 def times(case):

@@ -27,10 +27,8 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.environ.get("FLAPFOAM_PROJECT_DIR", os.path.join(
-    os.path.dirname(os.path.abspath(__file__)), "../../..")) + "/scripts")
-from flapfoam import checkRun  # noqa: E402
-from flapfoam.tables import joinedTable, startFolders  # noqa: E402
+from flapfoam import checkRun
+from flapfoam.tables import joinedTable, startFolders
 
 
 def bodies(case, name="eABAMeshMotion"):

@@ -38,11 +38,9 @@ import math
 import os
 import sys
 
-sys.path.insert(0, os.environ.get("FLAPFOAM_PROJECT_DIR", os.path.join(
-    os.path.dirname(os.path.abspath(__file__)), "../../..")) + "/scripts")
-import sphereMesh  # noqa: E402  (this case's body component)
-from flapfoam import meshGen, wingMesh  # noqa: E402
-from flapfoam.blockMesh import FOAM_HEADER, writeCase  # noqa: E402
+import sphereMesh  # this case's body component
+from flapfoam import meshGen, wingMesh
+from flapfoam.blockMesh import FOAM_HEADER, writeCase
 
 # Body pitch the refined region allows for (the stroke plane tilts with it)
 THETA_MAX = math.radians(20)

@@ -38,10 +38,8 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 CASE = os.path.dirname(HERE)
-sys.path.insert(0, os.environ.get("FLAPFOAM_PROJECT_DIR", os.path.join(
-    CASE, "../..")) + "/scripts")
-from flapfoam import flightData  # noqa: E402
-from flapfoam.plotting import cycleAxes, plt, save  # noqa: E402
+from flapfoam import flightData
+from flapfoam.plotting import cycleAxes, plt, save
 
 # name, case folder, Allrun options, legend label, line style (Tz dashed:
 # its z(t) lies on TzRy's)

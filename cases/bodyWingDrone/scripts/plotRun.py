@@ -4,12 +4,9 @@
 #     under the GNU General Public License v3 or later (COPYING).
 """Plots of a body-wing drone run: flapfoam.plotBodyWing (usage there)."""
 
-import os
 import sys
 
-sys.path.insert(0, os.environ.get("FLAPFOAM_PROJECT_DIR", os.path.join(
-    os.path.dirname(os.path.abspath(__file__)), "../../..")) + "/scripts")
-from flapfoam.plotBodyWing import main  # noqa: E402
+from flapfoam.plotBodyWing import main
 
 if __name__ == "__main__":
     sys.exit(main())

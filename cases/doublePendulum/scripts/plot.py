@@ -13,15 +13,13 @@ Reads the same files as compare.py (run ./Allrun first).
 """
 
 import os
-import sys
 
 import matplotlib
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+import matplotlib.pyplot as plt
+import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import compare  # noqa: E402
+import compare
 
 DEG = 180/np.pi
 STYLE = {"Newmark": ("C0", "o"), "symplectic": ("C1", "s"),

@@ -4,12 +4,9 @@
 #     under the GNU General Public License v3 or later (COPYING).
 """Checks of the wing's overset mesh after makeMesh: flapfoam.meshChecks."""
 
-import os
 import sys
 
-sys.path.insert(0, os.environ.get("FLAPFOAM_PROJECT_DIR", os.path.join(
-    os.path.dirname(os.path.abspath(__file__)), "../../..")) + "/scripts")
-from flapfoam.meshChecks import meshCheck  # noqa: E402
+from flapfoam.meshChecks import meshCheck
 
 if __name__ == "__main__":
     sys.exit(meshCheck())

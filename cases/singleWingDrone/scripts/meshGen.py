@@ -57,15 +57,12 @@ flapfoam.wingMesh and flapfoam.backgroundMesh (shared with the body-wing
 drone).  Units: metres.  Python: /usr/bin/python3 (numpy).
 """
 
-import os
 import sys
 
-sys.path.insert(0, os.environ.get("FLAPFOAM_PROJECT_DIR", os.path.join(
-    os.path.dirname(os.path.abspath(__file__)), "../../..")) + "/scripts")
-from flapfoam import meshGen  # noqa: E402
-from flapfoam import wingGeometry as geo  # noqa: E402
-from flapfoam.backgroundMesh import BACKGROUND  # noqa: E402
-from flapfoam.wingMesh import COMPONENT, LEVELS  # noqa: E402
+from flapfoam import meshGen
+from flapfoam import wingGeometry as geo
+from flapfoam.backgroundMesh import BACKGROUND
+from flapfoam.wingMesh import COMPONENT, LEVELS
 
 
 def main(argv=None):
