@@ -1,14 +1,17 @@
 #------------------------------------------------------------------------------
-# flapFoam: shell functions of the drone cases' Alltest scripts (sourced).
-# Each prints PASS/FAIL lines "PASS [label] ..." and sets status=1 on a
-# failure: run, motionCycle, plots, result, sameFiles, flightData,
-# quasiSteady, vacuum.  Needs:
+# flapFoam: shell functions of the drone cases' Alltest scripts (sourced,
+# with the project's check functions, scripts/checkFunctions).  Each
+# prints PASS/FAIL lines "PASS [label] ..." (a failure sets status=1):
+# run, motionCycle, plots, copiedCase, result, flightData, quasiSteady,
+# vacuum.  Needs:
 # python (Debian's python3), the case folder as the working directory,
 # testRuns (the folder of the checks' runs and logs, set by the Alltest),
 # checkRun (the single-wing drone's scripts/checkRun.py).
 #------------------------------------------------------------------------------
 
 projectScripts="$(cd "${BASH_SOURCE[0]%/*}" && pwd -P)"
+# shellcheck source=scripts/checkFunctions
+. "$projectScripts/checkFunctions"
 
 # Allrun options: tight linear solvers (p, pFinal, U, UFinal tolerance
 # 1e-12, relTol 0: comparisons then measure what they compare, not the
@@ -43,8 +46,7 @@ run()
         grep -E '^(PASS|FAIL) ' "$log" | sed -E "s/^(PASS|FAIL) /\1 [$label] /"
         if [ "$rc" -ne 0 ]
         then
-            echo "FAIL [$label] ./Allrun $* exited $rc (see $log)"
-            status=1
+            fail "[$label] ./Allrun $* exited $rc (see $log)"
         fi
         return
     fi
@@ -55,15 +57,14 @@ run()
     if [ "$rc" -ne 0 ] || [ "$f" -gt 0 ] || \
        { [ -f scripts/oversetCheck.py ] && [ "$p" -eq 0 ]; }
     then
-        echo "FAIL [$label] ./Allrun $* exited $rc, $p orphan checks" \
+        fail "[$label] ./Allrun $* exited $rc, $p orphan checks" \
              "passed, $f failed (see $log)"
-        status=1
     elif [ -f scripts/oversetCheck.py ]
     then
-        echo "PASS [$label] run completed; no orphan at any of the $p" \
+        pass "[$label] run completed; no orphan at any of the $p" \
              "written steps ($((SECONDS - t0)) s)"
     else
-        echo "PASS [$label] run completed ($((SECONDS - t0)) s)"
+        pass "[$label] run completed ($((SECONDS - t0)) s)"
     fi
 }
 
@@ -82,10 +83,9 @@ plots()
     error="$(grep -o 'max |q - analytic|/amplitude = [^ ]*' "$testRuns/log.plotRun")"
     if [ "$n" -eq "$#" ]
     then
-        echo "PASS [$label] plots: $n PNGs in $dir/plots${error:+; $error}"
+        pass "[$label] plots: $n PNGs in $dir/plots${error:+; $error}"
     else
-        echo "FAIL [$label] plots: $n of $# PNGs (see $testRuns/log.plotRun)"
-        status=1
+        fail "[$label] plots: $n of $# PNGs (see $testRuns/log.plotRun)"
     fi
 }
 
@@ -106,39 +106,12 @@ motionCycle()
     steps=$(grep -h '^Steps: ' "$dir/log.oversetMotionCheck" 2>/dev/null)
     if [ "$rc" -eq 0 ] && grep -q '^oversetMotionCheck: OK' "$log"
     then
-        echo "PASS [$label] a whole cycle of the mesh motion: $steps" \
+        pass "[$label] a whole cycle of the mesh motion: $steps" \
              "($((SECONDS - t0)) s)"
     else
-        echo "FAIL [$label] ./Allrun -motionOnly exited $rc:" \
+        fail "[$label] ./Allrun -motionOnly exited $rc:" \
              "$(grep -h '^oversetMotionCheck: FAILED' "$log" | head -1)" \
              "(see $log)"
-        status=1
-    fi
-}
-
-# badInput <what> <message> <command...>: the command (an Allrun or a bench
-# script given a bad option) stops within 60 s with a non-zero exit and a
-# message holding <message> (the option, the value and what is allowed),
-# and leaves ${badInputDir:-runs}/ as it was (nothing made)
-badInput()
-{
-    local what="$1" message="$2" dir="${badInputDir:-runs}"
-    shift 2
-    local before after out rc
-    before=$(ls -A "$dir")
-    out=$(timeout 60 "$@" 2>&1 < /dev/null)
-    rc=$?
-    after=$(ls -A "$dir")
-    if [ "$rc" -ne 0 ] && [ "$rc" -ne 124 ] && [[ "$out" == *"$message"* ]] \
-       && [ "$before" = "$after" ]
-    then
-        echo "PASS bad input $what: exit $rc, \"$message\", nothing made"
-    else
-        echo "FAIL bad input $what: exit $rc (124: hung), output" \
-             "\"$(tail -c 300 <<< "$out")\", expected \"$message\";" \
-             "$dir/ $([ "$before" = "$after" ] && echo unchanged || \
-             echo changed)"
-        status=1
     fi
 }
 
@@ -161,14 +134,13 @@ copiedCase()
     rc=$?
     if [ "$rc" -eq 0 ]
     then
-        echo "PASS [$label] a copy in $copy ran with only etc/bashrc:" \
+        pass "[$label] a copy in $copy ran with only etc/bashrc:" \
              "Allrun $* ($((SECONDS - t0)) s)"
     else
-        echo "FAIL [$label] the copy's Allrun $* exited $rc (see" \
+        fail "[$label] the copy's Allrun $* exited $rc (see" \
              "$testRuns/log.Alltest.$label)"
-        status=1
     fi
-    badInputDir="$copy" badInput "$label environment not set" \
+    expectRefusal -dir "$copy" "$label environment not set" \
         "source it first" env -i PATH=/usr/bin:/bin "$copy/Allrun" "$@"
     rm -rf "$copy"
 }
@@ -178,27 +150,7 @@ result()
 {
     local label="$1"
     shift
-    "$python" "$checkRun" "$@" | sed -E "s/^(PASS|FAIL) /\1 [$label] /"
-    [ "${PIPESTATUS[0]}" -eq 0 ] || status=1
-}
-
-# sameFiles <label> <text> <dirA> <dirB> <file...>: PASS if every file
-# (a path under both folders) is byte for byte the same in both
-sameFiles()
-{
-    local label="$1" text="$2" a="$3" b="$4" f differ=()
-    shift 4
-    for f in "$@"
-    do
-        cmp -s "$a/$f" "$b/$f" || differ+=("$f")
-    done
-    if [ "${#differ[@]}" -eq 0 ]
-    then
-        echo "PASS [$label] $text: $# files byte for byte the same"
-    else
-        echo "FAIL [$label] $text: differ: ${differ[*]}"
-        status=1
-    fi
+    labelled "$label" "$python" "$checkRun" "$@"
 }
 
 # flightData <label> <flightData.py arguments...>
@@ -206,9 +158,7 @@ flightData()
 {
     local label="$1"
     shift
-    "$python" "$projectScripts/flightData.py" "$@" \
-        | sed -E "s/^(PASS|FAIL) /\1 [$label] /"
-    [ "${PIPESTATUS[0]}" -eq 0 ] || status=1
+    labelled "$label" "$python" "$projectScripts/flightData.py" "$@"
 }
 
 # quasiSteady <label> <run folder> <rows> <Allrun options...>: Allrun
@@ -225,31 +175,16 @@ quasiSteady()
     local t0=$SECONDS log="$testRuns/log.Alltest.$label"
     if ./Allrun -model quasiSteady -noPlot -case "$dir" "$@" > "$log" 2>&1
     then
-        echo "PASS [$label] Allrun -model quasiSteady $* completed" \
+        pass "[$label] Allrun -model quasiSteady $* completed" \
             "($((SECONDS - t0)) s: $(grep -o 'in [0-9.]* s of wall' "$log"))"
     else
-        echo "FAIL [$label] Allrun -model quasiSteady $* failed (see $log)"
-        status=1
+        fail "[$label] Allrun -model quasiSteady $* failed (see $log)"
         return
     fi
     flightData "$label" check "$dir" --rows "$rows" --attr level=none \
         --attr stencil=none --attr model=quasiSteady
-    PYTHONPATH="$projectScripts${PYTHONPATH:+:$PYTHONPATH}" "$python" -c "
-import sys, numpy as np
-from flapfoam import flightData
-_, d = flightData.load('$dir')
-j = np.loadtxt('$dir/postProcessing/rigidBodySimulate/0/joints.dat')
-n = d['joints/q'].shape[1]
-h = np.column_stack([d['time'], d['joints/q']])
-h = np.array([[float('%.15g' % v) for v in r] for r in h])
-cols = [0] + list(range(1, 3*n, 3))
-same = h.shape == (len(j), n + 1) and (h == j[:, cols]).all()
-bad = [k for k, v in d.items() if not np.isfinite(v[1:]).all()]
-print('%s [$label] flight data = joints.dat: %d rows, time and q_0..q_%d'
-      ' exactly (15 digits), final x = q_1 = %.6g m, z = q_0 = %.6g m;'
-      ' non-finite: %s' % ('PASS' if same and not bad else 'FAIL', len(h),
-      n - 1, h[-1, 2], h[-1, 1], bad or 'none'))
-sys.exit(0 if same and not bad else 1)" || status=1
+    labelled "$label" "$python" -m flapfoam.result_checks \
+        flight-data-joints "$dir"
 }
 
 # vacuum <label> <run folder> <tol>: rigidBodySimulate on a copy of the
@@ -275,9 +210,8 @@ vacuum()
         result "$label" --name rigidBodySimulate rbs "$run" "$rbs" \
             --tol "$tol"
     else
-        echo "FAIL [$label] rigidBodySimulate failed" \
+        fail "[$label] rigidBodySimulate failed" \
              "(see $rbs/log.rigidBodySimulate)"
-        status=1
     fi
 }
 

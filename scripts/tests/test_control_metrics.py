@@ -1,0 +1,30 @@
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
+"""controlPlot's metrics of a controlled quantity's error, on made-up
+errors whose answers are known by hand."""
+
+import math
+
+import numpy as np
+
+from flapfoam.controlPlot import errorMetrics
+
+
+def test_metrics_of_made_up_errors():
+    # e = 0.1 exp(-3 t): in a band of 0.01 from t = ln(10)/3 = 0.768 s
+    t = np.linspace(0, 2, 201)
+    e = 0.1*np.exp(-3*t)
+    m = errorMetrics(t, e, 0.01, 1.0)
+    after = e[100:]
+    assert m["settlingTime"] == t[77]
+    assert m["inBand"] == 1
+    assert abs(m["maxAbsError"] - 0.1*math.exp(-3.0)) < 1e-17
+    assert abs(m["meanError"] - after.mean()) < 1e-15
+    assert abs(m["rmsError"] - math.sqrt((after**2).mean())) < 1e-15
+    # -e + 0.02 t^4: out of the band again at the end
+    late = errorMetrics(t, -e + 0.02*t**4, 0.01, 1.0)
+    assert late["settlingTime"] == math.inf and late["inBand"] == 0
+    # 0.001: never out
+    never = errorMetrics(t, 0.001 + 0*t, 0.01, 1.0)
+    assert never["settlingTime"] == 0 and never["inBand"] == 1
