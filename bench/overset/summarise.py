@@ -24,7 +24,7 @@ import time
 
 import numpy as np
 
-from flapfoam import stepTimers
+from flapfoam import step_timers
 
 
 # The stock solver with the paper's settings (-settings): the reference of
@@ -33,7 +33,7 @@ STOCK = "inverseDistance+paper+stockInterpolation"
 
 
 def median_columns(case, startup):
-    columns, data = stepTimers.read_input(
+    columns, data = step_timers.read_input(
         os.path.join(case, "postProcessing", "stepTimers"), startup)
     return {c: float(np.median(data[:, i])) for i, c in enumerate(columns)}, \
         len(data)
@@ -142,9 +142,9 @@ def table(rows, startup):
 
 
 def pimple_table(rows):
-    """The pimple column split (stepTimers.pimple_split) of the rows that
+    """The pimple column split (step_timers.pimple_split) of the rows that
     have it: the markdown lines."""
-    split = [(r, stepTimers.pimple_split(r["med"])) for r in rows]
+    split = [(r, step_timers.pimple_split(r["med"])) for r in rows]
     split = [(r, s) for r, s in split if s]
     if not split:
         return []

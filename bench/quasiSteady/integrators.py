@@ -19,7 +19,7 @@ Writes a markdown table (differences in mm and in % of the reference's
 import argparse
 import os
 
-from flapfoam.qsSweep import Model, Sweep
+from flapfoam.qs_sweep import Model, Sweep
 
 INTEGRATORS = (("Newmark", 1), ("Newmark", 3), ("symplectic", 1),
                ("symplectic", 3))

@@ -28,7 +28,7 @@ import sys
 
 import numpy as np
 
-from flapfoam import rankTables
+from flapfoam import rank_tables
 
 REPORT = "oversetCouplingsReport"
 
@@ -36,13 +36,13 @@ REPORT = "oversetCouplingsReport"
 def counts(fname):
     """What one report gives: the shares and imbalances, processor faces
     (each counted once)."""
-    t = rankTables.read_table(fname, REPORT)
+    t = rank_tables.read_table(fname, REPORT)
     total = t["total"]
     sampled = max(total["sampledAcceptors"], 1.0)
-    work = rankTables.column(t, "oversetWork")
-    cells = rankTables.column(t, "cells")
-    sweep = rankTables.column(t, "processorFaces") \
-        + rankTables.column(t, "remoteDonors")
+    work = rank_tables.column(t, "oversetWork")
+    cells = rank_tables.column(t, "cells")
+    sweep = rank_tables.column(t, "processorFaces") \
+        + rank_tables.column(t, "remoteDonors")
     return {"remote": total["remoteAcceptors"]/sampled,
             "allRemote": total["allRemoteAcceptors"]/sampled,
             "pairs": total["remotePairs"]/max(total["pairs"], 1.0),

@@ -278,7 +278,7 @@ def tables(data):
     lines = ["# Scaling bench: where a step goes from 2 to 48 ranks", "",
              "`bench/scaling/run` (docs/benches.md). Counted: exact "
              "figures of each decomposition (structure, traffic); timed: "
-             "this 2-core machine; model: `scripts/flapfoam/scalingModel.py`"
+             "this 2-core machine; model: `scripts/flapfoam/scaling_model.py`"
              " (its assumptions are in its header)."]
     for level in data["levels"]:
         lines += goals(data, level)

@@ -13,7 +13,7 @@ counted traffic of every level that has some (DIR/<level>/traffic/<run>-s<N>/
 counts, the oversetRankReport of its log, its peak memory: the count level's
 and any other counted with -countLevel), the timed runs
 (DIR/<level>/timed/<run>-r<R>/postProcessing/stepTimers) and
-DIR/pingPong.log; fits the model's costs (flapfoam.scalingModel) and writes
+DIR/pingPong.log; fits the model's costs (flapfoam.scaling_model) and writes
 PREFIX.md (tables: structure, traffic, timed against the model, the
 model's step per level, method, ranks and stencil, the goals of issue 11
 part 3) and the charts PREFIX-*.png (charts.py).
@@ -28,8 +28,8 @@ import time
 
 import numpy as np
 
-from flapfoam import (mpiCounts, rankTables, scalingModel,
-                      scalingValidate, stepTimers)
+from flapfoam import (mpi_counts, rank_tables, scaling_model,
+                      scaling_validate, step_timers)
 import charts
 import report
 
@@ -44,14 +44,14 @@ def read_structure(folder, base):
     out = {}
     for path in sorted(glob.glob(os.path.join(folder, "*-np*.report"))):
         m = re.match(r"(\w+)-np(\d+)\.report$", os.path.basename(path))
-        table = rankTables.read_table(path, REPORT)
-        decomp = rankTables.read_decomposition(
+        table = rank_tables.read_table(path, REPORT)
+        decomp = rank_tables.read_decomposition(
             path[:-len(".report")] + ".cellDecomposition")
         if mesh is None:
             mesh = os.path.join(base, "constant", "polyMesh")
-        nbr = rankTables.neighbour_ranks(mesh, decomp)
+        nbr = rank_tables.neighbour_ranks(mesh, decomp)
         out[(m.group(1), int(m.group(2)))] = \
-            scalingModel.Decomposition(table, nbr)
+            scaling_model.Decomposition(table, nbr)
     return out
 
 
@@ -66,11 +66,11 @@ def read_traffic(folder, n1, n2):
         short = d[:-len("-s%d" % n2)] + "-s%d" % n1
         if not m or not os.path.isdir(os.path.join(short, "counts")):
             continue
-        entry = {"perStep": mpiCounts.per_step(
+        entry = {"perStep": mpi_counts.per_step(
             os.path.join(short, "counts"), n1, os.path.join(d, "counts"), n2)}
         log = os.path.join(d, "log.oversetMotionCheck")
         if os.path.isfile(log):
-            entry["report"] = rankTables.read_table(log, "oversetRankReport")
+            entry["report"] = rank_tables.read_table(log, "oversetRankReport")
         with open(os.path.join(d, "memory")) as f:
             entry["memory"] = float(f.read().split()[0])
         out[(m.group(1), int(m.group(2)), m.group(3))] = entry
@@ -82,13 +82,13 @@ def read_timed(folder, startup):
     medians}} of a level's timed runs; method "serial" for P = 1; parts:
     rbd + overset + pimple (total less the rest of the step: writing the
     fields, which the model leaves out); split: the pimple column's
-    (stepTimers.pimple_split of the medians, None without it)."""
+    (step_timers.pimple_split of the medians, None without it)."""
     groups = {}
     for d in sorted(glob.glob(os.path.join(folder, "*-r*"))):
         m = re.match(r"(\w+)-np(\d+)-(\w+)-r\d+$", os.path.basename(d))
         if not m or not os.path.isdir(os.path.join(d, "postProcessing")):
             continue
-        columns, data = stepTimers.read_input(
+        columns, data = step_timers.read_input(
             os.path.join(d, "postProcessing", "stepTimers"), startup)
         med = {c: float(np.median(data[:, i])) for i, c in enumerate(columns)}
         parts = sum(data[:, columns.index(c)]
@@ -102,7 +102,7 @@ def read_timed(folder, startup):
                for c in set.intersection(*(set(r) for r in g))}
         out[k] = dict({c: med[c] for c in
                        ("rbd", "overset", "pimple", "total", "parts")},
-                      rounds=len(g), split=stepTimers.pimple_split(med))
+                      rounds=len(g), split=step_timers.pimple_split(med))
     return out
 
 
@@ -135,7 +135,7 @@ def traffic_fit(data, stencil):
             for r, step in enumerate(e["perStep"]):
                 rows.append((p, d.pairs[r], step["p2pBytes"],
                              step["p2pCalls"]))
-    return scalingModel.TrafficFit(rows)
+    return scaling_model.TrafficFit(rows)
 
 
 def pimple_traffics(data, count_level):
@@ -155,7 +155,7 @@ def serial_of(structure):
     """The serial decomposition of a level (cells, overset work, pairs
     from any of its reports' totals)."""
     d = next(iter(structure.values()))
-    return scalingModel.serial_decomposition(
+    return scaling_model.serial_decomposition(
         d.cells.sum(), d.work.sum(), d.allPairs.sum())
 
 
@@ -175,7 +175,7 @@ def fit_costs(data, stencil, level):
     check the model: on this machine they share its 2 cores with the
     other jobs."""
     pimple = data["pimpleTraffic"]
-    costs = scalingModel.Costs(data["machine"],
+    costs = scaling_model.Costs(data["machine"],
                                pimple.get(level, pimple[None]),
                                data["fits"][stencil])
     costs.stencil = stencil
@@ -190,7 +190,7 @@ def fixed_overset(data, stencil):
     """cFix, cWork of the serial runs of all levels together (least
     squares, cFix >= 0): whether a part of the overset work does not
     shrink with the mesh."""
-    costs = scalingModel.Costs(data["machine"], data["pimpleTraffic"][None],
+    costs = scaling_model.Costs(data["machine"], data["pimpleTraffic"][None],
                                data["fits"][stencil])
     costs.fit_overset([(t["overset"], d.work[0], 0.0)
                        for t, d in serial_runs(data, stencil).values()])
@@ -205,11 +205,11 @@ def predictions(data):
         for stencil in data["stencils"]:
             costs = fit_costs(data, stencil, level)
             data["costs"][(level, stencil)] = costs
-            out[(level, "serial", 1, stencil)] = scalingModel.predict(
+            out[(level, "serial", 1, stencil)] = scaling_model.predict(
                 costs, serial_of(structure))
             for (method, p), d in structure.items():
                 out[(level, method, p, stencil)] = \
-                    scalingModel.predict(costs, d)
+                    scaling_model.predict(costs, d)
     return out
 
 
@@ -230,7 +230,7 @@ def load(args):
         if os.path.isdir(os.path.join(args.dir, lv, "traffic"))}
     data["timed"] = {lv: read_timed(os.path.join(args.dir, lv, "timed"),
                                     args.startup) for lv in levels}
-    data["machine"] = scalingValidate.read_ping_pong(os.path.join(args.dir, "pingPong.log"))
+    data["machine"] = scaling_validate.read_ping_pong(os.path.join(args.dir, "pingPong.log"))
     data["pimpleTraffic"] = pimple_traffics(data, args.countLevel)
     data["stencils"] = [s for s in STENCILS if any(
         k[2] == s for k in data["traffic"][args.countLevel])]

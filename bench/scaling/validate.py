@@ -2,7 +2,7 @@
 # License
 #     This file is part of flapFoam, derived from OpenFOAM: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""The scaling model against measured runs (flapfoam.scalingValidate).
+"""The scaling model against measured runs (flapfoam.scaling_validate).
 
     bench/scaling/validate.py [ARCHIVE ...] [-rounds FILE ...]
         [-levels "coarse medium"] [-calibrate PATTERN ...]
@@ -39,7 +39,7 @@ import os
 import sys
 
 try:
-    from flapfoam import scalingCauses, scalingModel, scalingValidate as sv
+    from flapfoam import scaling_causes, scaling_model, scaling_validate as sv
 except ImportError:
     sys.exit("validate.py: no flapfoam package: source etc/bashrc or set "
              "PYTHONPATH=<flapFoam>/scripts")
@@ -71,8 +71,8 @@ def main():
     args = arguments()
     runs = sv.read_archives(args.archives, rounds=args.rounds,
                             level_names=args.levels.split())
-    patterns = scalingModel.CALIBRATION_RUNS
-    cal = scalingModel.CALIBRATION
+    patterns = scaling_model.CALIBRATION_RUNS
+    cal = scaling_model.CALIBRATION
     if args.calibrate:
         if args.calibrate != ["default"]:
             patterns = tuple(args.calibrate)
@@ -85,7 +85,7 @@ def main():
             f.write("\n".join(sv.table(rows, markdown=True)) + "\n")
     if args.causes:
         with open(args.causes, "w") as f:
-            f.write("\n".join(scalingCauses.report(runs, cal)) + "\n")
+            f.write("\n".join(scaling_causes.report(runs, cal)) + "\n")
 
 
 if __name__ == "__main__":

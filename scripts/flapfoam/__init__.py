@@ -6,27 +6,52 @@ flapfoam: the Python side of flapFoam, one package for the cases, the
 benchmarks and the tests (numpy; scipy, h5py and matplotlib where a module
 says so).  Only the plot modules import matplotlib.
 
-    foamDict        OpenFOAM dictionaries, rigidBodyMotionState
-    tables          per-step tables (joints.dat, bodies.dat) joined over
-                    restarts, time folders
-    wang            Wang kinematics of imposedMotion entries
-    flightData      HDF5 flight data: find, load, check, compare
-    stepTimers      stepTimers.dat: read, join, summarise
-    mpiCounts       MPI counts per rank (libflapFoamMPICounters.so): read,
-                    totals, per-step difference of two runs
-    foamMesh        polyMesh and volScalarField reader
-    wingGeometry    the semi-elliptical wing (docs/paper.md, Table 1)
-    blockMesh       blockMeshDict writer, 1-D cell distributions
-    wingMesh        the wing component mesh and its levels
-    backgroundMesh  the background cube and its refinement regions
-    meshGen         the command line and output of the cases' meshGen.py
-    checks          PASS/FAIL lines
-    checkRun        checks of drone runs (prescribed joints, timers, ...)
-    meshChecks      checks of the wing's overset mesh and its orphans
-    plotting        matplotlib set-up and the plots the cases share
-    plotStepTimers  the step-timer bar chart
-    plotSingleWing  plots of a single-wing drone run
-    plotBodyWing    plots of a body-wing drone run
+Modules (PEP 8 names; the tools run as python3 -m flapfoam.<module>):
+
+  readers
+    foam_dict         OpenFOAM dictionaries, rigidBodyMotionState
+    foam_mesh         polyMesh and volScalarField reader
+    tables            per-step tables (joints.dat, bodies.dat) joined over
+                      restarts, time folders
+    flight_data       HDF5 flight data: find, load, check, compare
+    step_timers       stepTimers.dat: read, join, summarise
+    solver_log        the per-step numbers of the solver's log
+    mpi_counts        MPI counts per rank (libflapFoamMPICounters.so)
+  references and models
+    wang              Wang kinematics of imposedMotion entries
+    quasi_steady      the quasi-steady blade-element wing's reference
+    chain_reference   planar chains by Lagrange's equations (scipy)
+    scaling_model     the per-rank model of a step (bench/scaling)
+  meshes
+    wing_geometry     the semi-elliptical wing (docs/paper.md, Table 1)
+    block_mesh        blockMeshDict writer, 1-D cell distributions
+    wing_mesh         the wing component mesh and its levels
+    background_mesh   the background cube and its refinement regions
+    mesh_gen          the command line and output of the cases' meshGen.py
+  checks and studies
+    checks            PASS/FAIL lines
+    result_checks     the result checks of the Alltest scripts
+    check_run         checks of drone runs (prescribed joints, timers, ...)
+    mesh_checks       checks of the wing's overset mesh and its orphans
+    integrator_order  the integrators' observed order in deltaT
+    grid_study        the grid study: Richardson, GCI
+    pimple_guard      the PIMPLE study's accuracy guard
+    pimple_study      the PIMPLE study's table
+    qs_sweep          kinematics sweeps of the quasi-steady model
+    qs_calibrate      the quasi-steady wing calibrated on a CFD run
+    gain_sweep        gain sweeps of the flight controller
+    compare_models    a CFD run against its quasi-steady run
+    authors_control   the paper authors' controllers as flapFoam entries
+    rank_tables       per-rank tables of a decomposition
+    scaling_causes    why one partition's PIMPLE costs more
+    scaling_validate  the scaling model against timed runs
+    timed_rounds      the portable stage's timed runs
+  plots
+    plotting          matplotlib set-up and the plots the cases share
+    plot_step_timers  the step-timer bar chart
+    plot_single_wing  plots of a single-wing drone run
+    plot_body_wing    plots of a body-wing drone run
+    control_plot      the closed-loop flight of controlled runs
 
 The package is found through PYTHONPATH, which etc/bashrc sets once
 ($FLAPFOAM_PROJECT_DIR/scripts); no script edits sys.path.  Run a tool as

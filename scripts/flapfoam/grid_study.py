@@ -36,11 +36,11 @@ import sys
 
 import numpy as np
 
-from flapfoam import flightData
-from flapfoam.foamDict import multibodyCoeffs
-from flapfoam.pimpleGuard import read_run
-from flapfoam.plotSingleWing import referenceValues
-from flapfoam import wingGeometry as geo
+from flapfoam import flight_data
+from flapfoam.foam_dict import multibodyCoeffs
+from flapfoam.pimple_guard import read_run
+from flapfoam.plot_single_wing import referenceValues
+from flapfoam import wing_geometry as geo
 
 SAFETY = 1.25
 QUANTITIES = (("C_zI", "mean C_zI"), ("C_xI", "mean C_xI"),
@@ -82,7 +82,7 @@ def pitching_moment(case, t0, t1):
     q_ref c_mean (rows: the load of the flow at the previous row's time)."""
     ref = referenceValues(multibodyCoeffs(
         os.path.join(case, "constant", "dynamicMeshDict")))
-    jcols, J, bcols, B = flightData.tables(case)
+    jcols, J, bcols, B = flight_data.tables(case)
     bc = {c: i for i, c in enumerate(bcols)}
     phi = np.interp(B[:-1, 0], J[:, 0], J[:, jcols.index("q_2")])
     m = -np.sin(phi)*B[1:, bc["wing:Mx"]] + np.cos(phi)*B[1:, bc["wing:My"]]

@@ -13,7 +13,7 @@ systems, each in rigidBodySimulate against an independent reference:
                      rest), flapfoam.chain_reference;
     singleWingDrone  cases/singleWingDrone's multibody dictionary with its
                      quasi-steady wings (-bodyLoad aerodynamics), one
-                     cycle from rest, flapfoam.quasiSteady;
+                     cycle from rest, flapfoam.quasi_steady;
     singleWingDroneStaggered  the same with -staggeredLoads: the loads once
                      a step at the state of its start, as the overset
                      solver takes the flow's load (expected: first order).
@@ -46,8 +46,8 @@ import sys
 import numpy as np
 
 from flapfoam.chain_reference import Chain, Harmonic
-from flapfoam.foamDict import multibodyCoeffs, readState, setEntry
-from flapfoam.quasiSteady import SingleWingDrone
+from flapfoam.foam_dict import multibodyCoeffs, readState, setEntry
+from flapfoam.quasi_steady import SingleWingDrone
 from flapfoam.tables import readTable
 
 SOLVERS = ("Newmark", "symplectic", "CrankNicolson")

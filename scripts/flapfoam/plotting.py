@@ -18,7 +18,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402,F401  (the plot modules' plt)
 
-from flapfoam.stepTimers import read_input  # noqa: E402
+from flapfoam.step_timers import read_input  # noqa: E402
 
 PLOT_STEP_TIMERS = os.path.join(
     os.path.dirname(os.path.dirname(os.path.abspath(__file__))),

@@ -36,8 +36,8 @@ which prints "PASS text" or "FAIL text" and exits 0 or 1.  CHECK:
                                cycles) against a finer step's (FINE)
     gain-sweep-table CSV       gainSweep's 2 x 2 table: 4 rows, status ok,
                                finite metrics
-    flight-data-times FILE     prints the time column of a flightData.h5
-    half-row CASE              the run's flightData.h5 made to end with a
+    flight-data-times FILE     prints the time column of a flight_data.h5
+    half-row CASE              the run's flight_data.h5 made to end with a
                                half-written row (every dataset but time one
                                row longer); prints the datasets changed and
                                the row counts the reader loads
@@ -55,14 +55,14 @@ import time
 
 import numpy as np
 
-from flapfoam import flightData
+from flapfoam import flight_data
 
 SYNTHETIC_WING = {"CL": 1.7, "CD0": 0.25, "CD1": 2.3}
 
 
 def flight_data_joints(case):
     """A quasi-steady run's flight data against its joints.dat."""
-    _, d = flightData.load(case)
+    _, d = flight_data.load(case)
     j = np.loadtxt(case + "/postProcessing/rigidBodySimulate/0/joints.dat")
     n = d["joints/q"].shape[1]
     h = np.column_stack([d["time"], d["joints/q"]])
@@ -154,7 +154,7 @@ def qs_entry(entry, log=None, tol=1e-6):
 def qs_reference(reference, joints, tol=1e-3):
     """joints.dat's x and z against the quasiSteady reference: the
     largest difference relative to the reference's range, each."""
-    from flapfoam.quasiSteady import errors
+    from flapfoam.quasi_steady import errors
     err = errors(np.loadtxt(reference), np.loadtxt(joints))
     return all(e <= tol for e in err.values()), ", ".join(
         "%s: max |run - reference| = %.3g of its range" % (k, e)
@@ -197,7 +197,7 @@ def control_errors(case, updates):
     """controlPlot measures what the controller measures: the controller
     updates at the start of the step after a cycle's end, so its error is
     that of the row before the one where its column changes."""
-    from flapfoam.controlPlot import Run
+    from flapfoam.control_plot import Run
     r = Run(case)
     worst, n = 0.0, set()
     for s in r.terms:
@@ -219,7 +219,7 @@ CONTROL_TOLERANCE = {"height.z": 1e-4, "surge.x": 3e-4, "pitch.theta": 3e-4}
 def control_convergence(fine, coarse):
     """The measures of a run at a coarser step (5 cycles) against those of
     a finer one, each within CONTROL_TOLERANCE."""
-    from flapfoam.controlPlot import Run
+    from flapfoam.control_plot import Run
     fine, coarse = Run(fine), Run(coarse)
     ok, text = coarse.t[-1] > 0.2499, []
     for label, m in coarse.measures.items():
@@ -244,17 +244,17 @@ def gain_sweep_table(path):
 
 
 def flight_data_times(path):
-    """The time column of a flightData.h5, "%g" each."""
+    """The time column of a flight_data.h5, "%g" each."""
     import h5py
     with h5py.File(path, "r") as f:
         return " ".join("%g" % t for t in f["time"][:])
 
 
 def half_row(case):
-    """CASE's flightData.h5 made to end with a half-written row (every
+    """CASE's flight_data.h5 made to end with a half-written row (every
     dataset but time one row longer, 999): "datasets row-counts-loaded"."""
     import h5py
-    with h5py.File(flightData.find(case), "r+") as f:
+    with h5py.File(flight_data.find(case), "r+") as f:
         names = []
         f.visititems(lambda n, o: names.append(n)
                      if isinstance(o, h5py.Dataset) and n != "time" else None)
@@ -262,13 +262,13 @@ def half_row(case):
             d = f[n]
             d.resize(d.shape[0] + 1, axis=0)
             d[-1] = 999.0
-    _, data = flightData.load(case)
+    _, data = flight_data.load(case)
     return "%d %s" % (len(names),
                       " ".join(sorted({str(len(v)) for v in data.values()})))
 
 
 def rows_summary(path):
-    """"times | sorted row counts, cells holding 999" of a flightData.h5."""
+    """"times | sorted row counts, cells holding 999" of a flight_data.h5."""
     import h5py
     rows, bad = set(), [0]
     with h5py.File(path, "r") as f:
@@ -288,7 +288,7 @@ def hold_open(path, seconds, wait=30.0):
     while not os.path.exists(path) \
             and time.monotonic() < deadline:
         time.sleep(0.05)
-    with flightData.opened(path) as f:
+    with flight_data.opened(path) as f:
         n = f["time"].shape[0]
         time.sleep(seconds)
     return n

@@ -8,7 +8,7 @@ import math
 
 import numpy as np
 
-from flapfoam.controlPlot import errorMetrics
+from flapfoam.control_plot import errorMetrics
 
 
 def test_metrics_of_made_up_errors():

@@ -1,13 +1,13 @@
 # License
 #     This file is part of flapFoam, derived from OpenFOAM: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""The quasi-steady sweep's results of one point (flapfoam.qsSweep), on a
+"""The quasi-steady sweep's results of one point (flapfoam.qs_sweep), on a
 made-up joints.dat whose answers are known by hand."""
 
 import numpy as np
 import pytest
 
-from flapfoam.qsSweep import pointResults
+from flapfoam.qs_sweep import pointResults
 
 
 def test_point_results_of_a_made_up_joints_table():

@@ -7,10 +7,9 @@ log (solverLog)."""
 
 import math
 
-import numpy as np
 import pytest
 
-from flapfoam import foamDict, solverLog, tables
+from flapfoam import foam_dict, solver_log, tables
 
 HEADER = """/*--------------------------------*- C++ -*---------*\\
   a banner
@@ -25,7 +24,7 @@ def write(path, text):
 
 
 def test_dictionary_nesting_lists_and_comments(tmp_path):
-    d = foamDict.readFoamDict(write(tmp_path / "d", HEADER + """
+    d = foam_dict.readFoamDict(write(tmp_path / "d", HEADER + """
 solver { type Newmark; }   // a comment
 g (0 0 -9.81);
 /* a block
@@ -47,18 +46,18 @@ def test_multibody_coeffs_of_either_layout(tmp_path):
     top = write(tmp_path / "a", HEADER + "nIter 3;\n")
     sub = write(tmp_path / "b", HEADER
                 + "eABAMeshMotionCoeffs { nIter 2; }\nother 1;\n")
-    assert foamDict.multibodyCoeffs(top)["nIter"] == ["3"]
-    assert foamDict.multibodyCoeffs(sub) == {"nIter": ["2"]}
+    assert foam_dict.multibodyCoeffs(top)["nIter"] == ["3"]
+    assert foam_dict.multibodyCoeffs(sub) == {"nIter": ["2"]}
 
 
 def test_state_of_a_run_and_a_hand_written_one(tmp_path):
-    run = foamDict.readState(write(tmp_path / "s1", HEADER + """
+    run = foam_dict.readState(write(tmp_path / "s1", HEADER + """
 t 0.0125; deltaT 1.2e-05;
 q 2(0.1 -0.2); qDot 2(1 2); qDdot 2(3 4);
 """))
     assert run["t"] == 0.0125
     assert list(run["q"]) == [0.1, -0.2] and list(run["qDdot"]) == [3, 4]
-    hand = foamDict.readState(write(tmp_path / "s2", HEADER
+    hand = foam_dict.readState(write(tmp_path / "s2", HEADER
                                     + "q (0.3 0.1); qDot (1 0);\n"))
     assert list(hand["q"]) == [0.3, 0.1]
     assert "qDdot" not in hand and "t" not in hand
@@ -104,7 +103,7 @@ def test_solver_log_per_step(tmp_path):
     case = tmp_path / "case"
     case.mkdir()
     (case / "log.overPimpleDyMFoam").write_text(LOG)
-    rows = solverLog.steps(str(case))
+    rows = solver_log.steps(str(case))
     assert rows.shape == (2, 4)
     assert rows[0].tolist() == [1e-5, 2e-9, 75, 1.5]
     assert rows[1].tolist() == pytest.approx([2e-5, 3e-9, 20, 0.75])
@@ -116,11 +115,11 @@ def test_solver_log_restart_replaces_the_steps_from_its_start(tmp_path):
     (case / "log.overPimpleDyMFoam").write_text(LOG)
     (case / "log.overPimpleDyMFoam.2e-05").write_text(
         LOG.split("Time = 2e-05")[0].replace("Time = 1e-05", "Time = 2e-05"))
-    rows = solverLog.steps(str(case))
+    rows = solver_log.steps(str(case))
     assert rows[:, 0].tolist() == [1e-5, 2e-5]
     assert rows[1, 2] == 75 and rows[1, 3] == 1.5
 
 
 def test_solver_log_step_without_continuity_line_is_nan(tmp_path):
     path = write(tmp_path / "log", "Time = 1\nExecutionTime = 1 s\n")
-    assert math.isnan(solverLog.read_log(path)[0][1])
+    assert math.isnan(solver_log.read_log(path)[0][1])

@@ -186,7 +186,7 @@ class FakeTerm:
 
 class FakeRun:
     """What control_errors and control_convergence read of a
-    controlPlot.Run: made-up rows of one controlled quantity."""
+    control_plot.Run: made-up rows of one controlled quantity."""
     runs = {}
 
     def __init__(self, case):
@@ -194,9 +194,9 @@ class FakeRun:
 
 
 def fake_runs(monkeypatch, **runs):
-    from flapfoam import controlPlot
+    from flapfoam import control_plot
     FakeRun.runs = runs
-    monkeypatch.setattr(controlPlot, "Run", FakeRun)
+    monkeypatch.setattr(control_plot, "Run", FakeRun)
 
 
 def test_control_errors_at_updates(monkeypatch):

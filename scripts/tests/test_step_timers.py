@@ -1,12 +1,12 @@
 # License
 #     This file is part of flapFoam, derived from OpenFOAM: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""flapfoam.stepTimers: the stepTimers.dat reader, restarts, the pimple
+"""flapfoam.step_timers: the step_timers.dat reader, restarts, the pimple
 split."""
 
 import pytest
 
-from flapfoam import stepTimers
+from flapfoam import step_timers
 
 
 def timers_file(folder, rows, columns="time rbd overset pimple total"):
@@ -22,12 +22,12 @@ def test_rows_after_start_up_joined_over_a_restart(tmp_path):
     timers_file(base / "0", [(1, 0.1, 0.2, 1.0, 1.3), (2, 0.1, 0.2, 1.1, 1.4),
                              (3, 0.1, 0.2, 1.2, 1.5)])
     timers_file(base / "2", [(2, 0.1, 0.3, 2.0, 2.4), (3, 0.1, 0.3, 2.1, 2.5)])
-    columns, data = stepTimers.read_input(str(tmp_path), 0)
+    columns, data = step_timers.read_input(str(tmp_path), 0)
     assert columns == ["time", "rbd", "overset", "pimple", "total"]
     assert data[:, 0].tolist() == [1, 2, 3]
     assert data[:, 3].tolist() == [1.0, 2.0, 2.1]
     # one start-up row dropped in each file
-    _, data = stepTimers.read_input(str(tmp_path), 1)
+    _, data = step_timers.read_input(str(tmp_path), 1)
     assert data[:, 0].tolist() == [2, 3]
     assert data[:, 3].tolist() == [1.1, 2.1]
 
@@ -38,19 +38,19 @@ def test_summary_and_ranks_files_are_not_timers_files(tmp_path):
     (base / "stepTimersSummary.dat").write_text("# x\n")
     (base / "stepTimersRanks.dat").write_text(
         "# rank rbd pimple\n0 0.1 1.0\n1 0.2 0.9\n")
-    assert [p.rsplit("/", 1)[1] for p in stepTimers.find_files(
+    assert [p.rsplit("/", 1)[1] for p in step_timers.find_files(
         str(tmp_path))] == ["stepTimers.dat"]
-    ranks = stepTimers.read_ranks(str(base / "stepTimersRanks.dat"))
+    ranks = step_timers.read_ranks(str(base / "stepTimersRanks.dat"))
     assert ranks == [{"rank": 0, "rbd": 0.1, "pimple": 1.0},
                      {"rank": 1, "rbd": 0.2, "pimple": 0.9}]
-    assert stepTimers.read_ranks(str(base / "absent.dat")) == []
+    assert step_timers.read_ranks(str(base / "absent.dat")) == []
 
 
 def test_a_row_that_does_not_fit_its_header_stops(tmp_path):
     path = timers_file(tmp_path / "0", [(1, 0, 0, 1)])
     with pytest.raises(SystemExit, match="a row of 4 values under a header"
                        " of 5 columns"):
-        stepTimers.read_file(str(path))
+        step_timers.read_file(str(path))
 
 
 def test_pimple_split_adds_up():
@@ -59,13 +59,13 @@ def test_pimple_split_adds_up():
            "pimpleTurbulence": 0.1, "pimpleOtherSolve": 0.02,
            "pimpleOversetInterpolate": 0.03, "pIterations1": 30,
            "pIterations2": 45, "pimpleInterpolations": 86}
-    s = stepTimers.pimple_split(row)
+    s = step_timers.pimple_split(row)
     assert s["momentum"] == pytest.approx(0.15)
     assert s["pressure"] == pytest.approx(0.5)
     assert s["pressureSolve"] == pytest.approx(0.3)
     assert s["turbulence"] == pytest.approx(0.12)
     assert s["rest"] == pytest.approx(1.0 - 0.15 - 0.5 - 0.12 - 0.03)
     assert s["pIterations"] == 75 and s["interpolations"] == 86
-    assert stepTimers.pimple_split({"pimple": 1.0}) is None
-    assert stepTimers.is_count("pIterations3")
-    assert not stepTimers.is_count("pimplePressure")
+    assert step_timers.pimple_split({"pimple": 1.0}) is None
+    assert step_timers.is_count("pIterations3")
+    assert not step_timers.is_count("pimplePressure")

@@ -1,7 +1,7 @@
 # License
 #     This file is part of flapFoam, derived from OpenFOAM: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""The quasi-steady reference's blade elements (flapfoam.quasiSteady), the
+"""The quasi-steady reference's blade elements (flapfoam.quasi_steady), the
 wing's geometry and the mesh levels (wingGeometry, wingMesh)."""
 
 import math
@@ -9,10 +9,10 @@ import math
 import numpy as np
 import pytest
 
-from flapfoam import wingGeometry as geo
-from flapfoam.backgroundMesh import BACKGROUND, backgroundCellSize
-from flapfoam.quasiSteady import Wing
-from flapfoam.wingMesh import LEVELS
+from flapfoam import wing_geometry as geo
+from flapfoam.background_mesh import BACKGROUND, backgroundCellSize
+from flapfoam.quasi_steady import Wing
+from flapfoam.wing_mesh import LEVELS
 
 
 def wing(**extra):

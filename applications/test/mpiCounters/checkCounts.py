@@ -20,7 +20,7 @@ PASS/FAIL line each; exit status non-zero if one fails.
 
 import sys
 
-from flapfoam import mpiCounts
+from flapfoam import mpi_counts
 from flapfoam.checks import Checks
 
 # What flapFoamMPICountersProbe sends (its header): rank -> function ->
@@ -53,7 +53,7 @@ PROBE_TO = [{1: (3 + 1 + 1 + 1, 3*1000*8 + 100 + 10*4 + 7*4)},
 
 
 def probe(check, directory):
-    ranks = mpiCounts.read_counts(directory)
+    ranks = mpi_counts.read_counts(directory)
     check(len(ranks) == 2, "probe: 2 counts files (%d)" % len(ranks))
     for r, (counts, expected) in enumerate(zip(ranks, PROBE)):
         got = {name: (f["calls"], f["bytes"], f["destinations"])
@@ -67,7 +67,7 @@ def probe(check, directory):
 
 
 def non_zero(check, directory, name):
-    for r, t in enumerate(mpiCounts.rank_totals(directory)):
+    for r, t in enumerate(mpi_counts.rank_totals(directory)):
         check(t["p2pBytes"] > 0 and t["collectiveCalls"] > 0,
               "%s rank %d: counts written, non-zero: %s" % (name, r, t))
 
@@ -75,10 +75,10 @@ def non_zero(check, directory, name):
 def steps(check, faces, dests, runs):
     runs = [(r.rsplit(":", 1)[0], int(r.rsplit(":", 1)[1])) for r in runs]
     pairs = list(zip(runs, runs[1:]))
-    first = mpiCounts.per_step(*pairs[0][0], *pairs[0][1])
+    first = mpi_counts.per_step(*pairs[0][0], *pairs[0][1])
     n = len(first)
     for (d1, n1), (d2, n2) in pairs[1:]:
-        check(mpiCounts.per_step(d1, n1, d2, n2) == first,
+        check(mpi_counts.per_step(d1, n1, d2, n2) == first,
               "%d ranks: per step, steps %d-%d = steps %d-%d"
               % (n, pairs[0][0][1], pairs[0][1][1], n1, n2))
     check(all(first[0] == t for t in first),
@@ -89,7 +89,7 @@ def steps(check, faces, dests, runs):
     check(all(t["destinations"] == dests for t in first),
           "%d ranks: per step %d ranks sent to (the neighbours; over the "
           "whole run: %s)" % (n, dests, [t["destinations"] for t in
-                                         mpiCounts.rank_totals(runs[0][0])]))
+                                         mpi_counts.rank_totals(runs[0][0])]))
     halo = 8*faces
     check(all(t["p2pBytes"] > 0 and t["p2pBytes"] % halo == 0
               for t in first),

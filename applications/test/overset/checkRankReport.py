@@ -39,7 +39,7 @@ import os
 import re
 import sys
 
-from flapfoam import rankTables
+from flapfoam import rank_tables
 
 PREFIX = "oversetRankReport"
 STOCK = "inverseDistance"
@@ -49,7 +49,7 @@ ANALYSIS = re.compile(
 
 
 def readReports(log):
-    """The reports of a log (flapfoam.rankTables), each a dict: time,
+    """The reports of a log (flapfoam.rank_tables), each a dict: time,
     stencil, ranks, columns, rows (per rank), total, max, mean (counts as
     integers), cellImbalance, remoteShare and analysis (the stock stencil's
     last count line before it, or None)."""
@@ -59,7 +59,7 @@ def readReports(log):
         if m:
             analyses.append((i, tuple(int(x) for x in m.groups())))
     reports = []
-    for t in rankTables.read_tables(log, PREFIX):
+    for t in rank_tables.read_tables(log, PREFIX):
         info = t["info"]
         before = [a for i, a in analyses if i < t["line"]]
         counts = [{k: int(v) for k, v in row.items()} for row in t["rows"]]

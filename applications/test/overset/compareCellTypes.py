@@ -21,7 +21,7 @@ import sys
 
 import numpy as np
 
-from flapfoam import foamMesh
+from flapfoam import foam_mesh
 from flapfoam.tables import timeValue
 
 
@@ -92,8 +92,8 @@ def main():
                 print("FAIL %s: no cellTypes at %s" % (name, tn))
                 ok = False
                 continue
-            r = foamMesh.readScalarField(os.path.join(ref, tn, "cellTypes"))
-            c = foamMesh.readScalarField(f)
+            r = foam_mesh.readScalarField(os.path.join(ref, tn, "cellTypes"))
+            c = foam_mesh.readScalarField(f)
             match = float(np.mean(r == c))
             worst = min(worst, match)
             diff = r != c

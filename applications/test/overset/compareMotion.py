@@ -6,7 +6,7 @@
 Compare the multibody motion of two drone runs (eABAMeshMotion) that
 differ only in the overset stencil: each body's force of bodies.dat and
 the trajectory of joints.dat, rows matched by time (the readers of
-flapfoam.checkRun and flapfoam.tables).
+flapfoam.check_run and flapfoam.tables).
 
 Usage: compareMotion.py REF CASE [-forceTol 0] [-qTol 0]
                         [-columns q_0,qDot_0,q_1,qDot_1] [-bodies wing]
@@ -15,7 +15,7 @@ Usage: compareMotion.py REF CASE [-forceTol 0] [-qTol 0]
          components of |F_CASE - F_REF| / max|F_REF|
          (max of |F| over the rows of the reference run); PASS if <= forceTol,
          each component reported.
-  trajectory: checkRun.py's relative difference |a - b| / max(|a|, |b|,
+  trajectory: check_run.py's relative difference |a - b| / max(|a|, |b|,
          floor), floor = 1e-3 x max |value| of that column over REF's rows;
          PASS if <= qTol for each of the columns.
 One PASS/FAIL line per check; exit status 1 on a failure.
@@ -27,7 +27,7 @@ import sys
 
 import numpy as np
 
-from flapfoam import checkRun
+from flapfoam import check_run
 from flapfoam.tables import joinedTable, startFolders
 
 
@@ -54,11 +54,11 @@ def main():
     # Forces
     ca, A = bodies(a.ref)
     cb, B = bodies(a.case)
-    ia, ib = checkRun.matchRows(A, B)
+    ia, ib = check_run.matchRows(A, B)
     for body in a.bodies.split(","):
         check = "%s %s force" % (name, body)
         if len(ia) == 0 or len(ia) != len(A) or len(ib) != len(B):
-            status |= checkRun.report(
+            status |= check_run.report(
                 False, check,
                 "rows at different times (%d common, %d and %d rows)"
                 % (len(ia), len(A), len(B)))
@@ -68,7 +68,7 @@ def main():
         FB = B[:, [cb.index(c) for c in comps]]
         scale = float(np.linalg.norm(FA, axis=1).max()) + 1e-300
         rel = np.abs(FA[ia] - FB[ib]).max(axis=0)/scale
-        status |= checkRun.report(
+        status |= check_run.report(
             float(rel.max()) <= a.forceTol, check,
             "vs %s, %d rows: max |dF|/max|F| %.2e (tol %g): %s "
             "(max|F| %.4g N)"
@@ -76,12 +76,12 @@ def main():
                ", ".join("F%s %.1e" % (c, r) for c, r in zip("xyz", rel)),
                scale))
 
-    # Trajectory (checkRun.py's relative difference with a floor)
-    ca, A = checkRun.joints(a.ref)
-    cb, B = checkRun.joints(a.case)
-    ia, ib = checkRun.matchRows(A, B)
+    # Trajectory (check_run.py's relative difference with a floor)
+    ca, A = check_run.joints(a.ref)
+    cb, B = check_run.joints(a.case)
+    ia, ib = check_run.matchRows(A, B)
     if len(ia) == 0 or len(ia) != len(A) or len(ib) != len(B):
-        status |= checkRun.report(
+        status |= check_run.report(
             False, "%s trajectory" % name,
             "rows at different times (%d common, %d and %d rows)"
             % (len(ia), len(A), len(B)))
@@ -91,9 +91,9 @@ def main():
             i, k = ca.index(col), cb.index(col)
             floor = 1e-3*np.abs(A[:, i]).max() + 1e-300
             worst[col] = float(
-                checkRun.relDiff(A[ia, i], B[ib, k], floor).max())
+                check_run.relDiff(A[ia, i], B[ib, k], floor).max())
         maxRel = max(worst.values())
-        status |= checkRun.report(
+        status |= check_run.report(
             maxRel <= a.qTol, "%s trajectory" % name,
             "vs %s, %d rows: max relative difference %.2e (tol %g): %s"
             % (refName, len(ia), maxRel, a.qTol,

@@ -4,7 +4,7 @@
 """
 Synthetic flight data of the single-wing drone for the qsCalibrate test:
 the tree flown from rest by the independent quasi-steady reference
-(flapfoam.quasiSteady.SingleWingDrone) with the chosen CL, CD0, CD1, and
+(flapfoam.quasi_steady.SingleWingDrone) with the chosen CL, CD0, CD1, and
 its wing's rows as the flightData function object writes them (centre of
 mass position and velocity, from the dictionary's centreOfMass, row-major
 orientation, angular velocity, force; the first row's loads NaN).
@@ -24,8 +24,8 @@ import os
 import h5py
 import numpy as np
 
-from flapfoam.foamDict import multibodyCoeffs
-from flapfoam.quasiSteady import SingleWingDrone, vec
+from flapfoam.foam_dict import multibodyCoeffs
+from flapfoam.quasi_steady import SingleWingDrone, vec
 
 
 def wingRows(drone, states, centre):

@@ -10,7 +10,7 @@ meshes that scripts/makeMesh turns into the overset mesh:
 
   <out>/wing/system/blockMeshDict         wing component (cellZone "wing"):
                                           the single-wing drone's
-                                          (flapfoam.wingMesh), same level
+                                          (flapfoam.wing_mesh), same level
                                           parameters
   <out>/body/system/blockMeshDict         body component (cellZone "body"):
                                           the cube shell of sphereMesh.py,
@@ -27,8 +27,8 @@ meshes that scripts/makeMesh turns into the overset mesh:
   <out>/meshGen.json                      parameters and planned sizes
 
 Usage:
-  meshGen.py <level> [-o DIR] [--phi DEG] [--alpha DEG]
-  meshGen.py --list
+  mesh_gen.py <level> [-o DIR] [--phi DEG] [--alpha DEG]
+  mesh_gen.py --list
 
 The wing's axes pass through the body centre (the origin), so the wing
 component is the single-wing drone's at the same pose.  Units: metres.
@@ -39,8 +39,8 @@ import os
 import sys
 
 import sphereMesh  # this case's body component
-from flapfoam import meshGen, wingMesh
-from flapfoam.blockMesh import FOAM_HEADER, writeCase
+from flapfoam import mesh_gen, wing_mesh
+from flapfoam.block_mesh import FOAM_HEADER, writeCase
 
 # Body pitch the refined region allows for (the stroke plane tilts with it)
 THETA_MAX = math.radians(20)
@@ -50,7 +50,7 @@ THETA_MAX = math.radians(20)
 # 22.5 mm), so that the body's walls need not cut it (system/fvSchemes:
 # noHoleCut ((2 1))).  Why this layout, and the layouts that failed a whole
 # cycle of Allrun -motionOnly: README.md, "Whole cycles".
-COMPONENT = dict(wingMesh.COMPONENT, rootMargin=7e-3)
+COMPONENT = dict(wing_mesh.COMPONENT, rootMargin=7e-3)
 
 
 class textDict:
@@ -74,21 +74,21 @@ def refineActions(region, margin):
 
 
 def main(argv=None):
-    args = meshGen.parseArgs(__doc__, sphereMesh.LEVELS, argv)
+    args = mesh_gen.parseArgs(__doc__, sphereMesh.LEVELS, argv)
     tilts = (-THETA_MAX, 0.0, THETA_MAX)
     if args.list:
         for name in sphereMesh.LEVELS:
-            m = meshGen.build(name, COMPONENT, tilts=tilts)
+            m = mesh_gen.build(name, COMPONENT, tilts=tilts)
             _, sinfo = sphereMesh.blockMeshDict(name)
             print("%-9s wing %7d cells, body %6d cells, background h %.2f mm"
                   % (name, m.winfo["cellsPlanned"], sinfo["cells"],
                      1e3*m.binfo["h"]))
         return 0
 
-    m = meshGen.buildPose(args, COMPONENT, tilts)
+    m = mesh_gen.buildPose(args, COMPONENT, tilts)
     stext, sinfo = sphereMesh.blockMeshDict(args.level)
-    hdr = meshGen.header(argv)
-    meshGen.writeWingAndBackground(
+    hdr = mesh_gen.header(argv)
+    mesh_gen.writeWingAndBackground(
         args.output, hdr, "Body-wing drone", m,
         lambda j, r: refineActions(r, m.binfo["margins"][j]))
     writeCase(os.path.join(args.output, "body"),
@@ -103,7 +103,7 @@ def main(argv=None):
                    pose=dict(phiDeg=args.phi, alphaDeg=args.alpha),
                    thetaMaxDeg=math.degrees(THETA_MAX),
                    wing=m.winfo, body=sinfo, background=m.binfo)
-    return meshGen.finish(
+    return mesh_gen.finish(
         args.output, summary,
         "meshGen: level %s: wing %d cells, body %d cells, background "
         "%d^3 cells refined %d times (h = %.3g m)"

@@ -38,7 +38,7 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 CASE = os.path.dirname(HERE)
-from flapfoam import flightData
+from flapfoam import flight_data
 from flapfoam.plotting import cycleAxes, plt, save
 
 # name, case folder, Allrun options, legend label, line style (Tz dashed:
@@ -118,9 +118,9 @@ def main():
     data = {}
     for name, _, _, _, _ in RUNS:
         folder = os.path.join(base, name)
-        if flightData.find(folder) is None:
+        if flight_data.find(folder) is None:
             sys.exit("plotQuasiSteady: no flight data in %s" % folder)
-        _, d = flightData.load(folder)
+        _, d = flight_data.load(folder)
         data[name] = (d["time"], d["joints/q"])
         t, q = data[name]
         wall = (" in %.2f s" % walls[name]) if name in walls else ""

@@ -2,11 +2,11 @@
 # License
 #     This file is part of flapFoam, derived from OpenFOAM: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""Plots of a body-wing drone run: flapfoam.plotBodyWing (usage there)."""
+"""Plots of a body-wing drone run: flapfoam.plot_body_wing (usage there)."""
 
 import sys
 
-from flapfoam.plotBodyWing import main
+from flapfoam.plot_body_wing import main
 
 if __name__ == "__main__":
     sys.exit(main())

@@ -19,8 +19,8 @@ meshes that scripts/makeMesh turns into the overset mesh:
                                           area
 
 Usage:
-  meshGen.py <level> [-o DIR] [--phi DEG] [--alpha DEG]
-  meshGen.py --list
+  mesh_gen.py <level> [-o DIR] [--phi DEG] [--alpha DEG]
+  mesh_gen.py --list
 
 Wing component ("box around a thin box", O-type): the plate |z| <= t/2 with
 the semi-elliptical planform is the hole of a block-structured mesh whose
@@ -53,31 +53,31 @@ so that the component's outer boundary always lies in cells of size
 h = 20 cbar/(N0 2^nRef).
 
 The levels, the component's topology and the background are those of
-flapfoam.wingMesh and flapfoam.backgroundMesh (shared with the body-wing
+flapfoam.wing_mesh and flapfoam.background_mesh (shared with the body-wing
 drone).  Units: metres.  Python: /usr/bin/python3 (numpy).
 """
 
 import sys
 
-from flapfoam import meshGen
-from flapfoam import wingGeometry as geo
-from flapfoam.backgroundMesh import BACKGROUND
-from flapfoam.wingMesh import COMPONENT, LEVELS
+from flapfoam import mesh_gen
+from flapfoam import wing_geometry as geo
+from flapfoam.background_mesh import BACKGROUND
+from flapfoam.wing_mesh import COMPONENT, LEVELS
 
 
 def main(argv=None):
-    args = meshGen.parseArgs(__doc__, LEVELS, argv)
+    args = mesh_gen.parseArgs(__doc__, LEVELS, argv)
     if args.list:
         for name in LEVELS:
-            m = meshGen.build(name, COMPONENT)
+            m = mesh_gen.build(name, COMPONENT)
             print("%-9s wing blocks %7d cells (nR %d nZ %d)  background "
                   "h %.2f mm" % (name, m.winfo["cellsPlanned"],
                                  m.winfo["nR"], m.winfo["nZ"],
                                  1e3*m.binfo["h"]))
         return 0
 
-    m = meshGen.buildPose(args, COMPONENT)
-    meshGen.writeWingAndBackground(args.output, meshGen.header(argv),
+    m = mesh_gen.buildPose(args, COMPONENT)
+    mesh_gen.writeWingAndBackground(args.output, mesh_gen.header(argv),
                                    "Single-wing drone", m)
     # components in merge order (scripts/makeOversetMesh): the wing is the
     # master, so that its overset patch becomes the first patch
@@ -88,7 +88,7 @@ def main(argv=None):
                    component=m.comp,
                    wing=m.winfo, background=m.binfo,
                    backgroundParameters={k: v for k, v in BACKGROUND.items()})
-    return meshGen.finish(
+    return mesh_gen.finish(
         args.output, summary,
         "meshGen: level %s: wing %d cells in %d blocks, background "
         "%d^3 cells refined %d times (h = %.3g m)"

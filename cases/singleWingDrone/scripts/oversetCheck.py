@@ -2,11 +2,11 @@
 # License
 #     This file is part of flapFoam, derived from OpenFOAM: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""Orphan check of the overset stencil of a run: flapfoam.meshChecks."""
+"""Orphan check of the overset stencil of a run: flapfoam.mesh_checks."""
 
 import sys
 
-from flapfoam.meshChecks import oversetCheck
+from flapfoam.mesh_checks import oversetCheck
 
 if __name__ == "__main__":
     sys.exit(oversetCheck())

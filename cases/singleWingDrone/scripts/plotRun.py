@@ -2,11 +2,11 @@
 # License
 #     This file is part of flapFoam, derived from OpenFOAM: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""Plots of a single-wing drone run: flapfoam.plotSingleWing (usage there)."""
+"""Plots of a single-wing drone run: flapfoam.plot_single_wing (usage there)."""
 
 import sys
 
-from flapfoam.plotSingleWing import main
+from flapfoam.plot_single_wing import main
 
 if __name__ == "__main__":
     sys.exit(main())

@@ -7,9 +7,9 @@ run against a reference run on the same mesh (the paper's settings: PISO,
 4 correctors, max Co 1, p to 1e-7), over the first whole flapping cycle(s)
 both runs completed.
 
-    python3 -m flapfoam.pimpleGuard REF CASE [--cycles N]
+    python3 -m flapfoam.pimple_guard REF CASE [--cycles N]
 
-Per run (its flight data, log.overPimpleDyMFoam, stepTimers.dat):
+Per run (its flight data, log.overPimpleDyMFoam, step_timers.dat):
   - C_xI, C_zI: the wing's force coefficients (plotSingleWing), their mean
     over the cycles (weighted by the step);
   - x = q_1, z = q_0 after the cycles (interpolated to the end time);
@@ -41,12 +41,12 @@ import sys
 
 import numpy as np
 
-from flapfoam import flightData
-from flapfoam import solverLog
-from flapfoam import stepTimers
+from flapfoam import flight_data
+from flapfoam import solver_log
+from flapfoam import step_timers
 from flapfoam.checks import report
-from flapfoam.foamDict import multibodyCoeffs
-from flapfoam.plotSingleWing import coefficients, referenceValues
+from flapfoam.foam_dict import multibodyCoeffs
+from flapfoam.plot_single_wing import coefficients, referenceValues
 
 # The guard's margins (issue 25)
 MEAN_TOL = 0.01         # cycle means, of the larger mean magnitude
@@ -87,7 +87,7 @@ def read_run(case, n_cycles):
     """The run's Cycles over its first n_cycles cycles."""
     ref = referenceValues(multibodyCoeffs(
         os.path.join(case, "constant", "dynamicMeshDict")))
-    jcols, J, bcols, B = flightData.tables(case)
+    jcols, J, bcols, B = flight_data.tables(case)
     jc = {c: i for i, c in enumerate(jcols)}
     t, cx, cz = coefficients(B, {c: i for i, c in enumerate(bcols)},
                              ref.qref)
@@ -101,13 +101,13 @@ def read_run(case, n_cycles):
     if J[-1, 0] < run.t1*(1 - 1e-9):
         sys.exit("pimpleGuard: %s reached t = %g s, not the end of %g "
                  "cycle(s), %g s" % (case, J[-1, 0], n_cycles, run.t1))
-    steps = solverLog.steps(case)
+    steps = solver_log.steps(case)
     sel = (steps[:, 0] > t0) & (steps[:, 0] <= run.t1*(1 + 1e-9))
     run.steps = int(sel.sum())
     run.continuity = float(np.nansum(steps[sel, 1]))
     run.p_iterations = float(steps[sel, 2].mean()) if run.steps else math.nan
     run.cpu = float(steps[sel, 3].sum())
-    columns, data = stepTimers.read_input(
+    columns, data = step_timers.read_input(
         os.path.join(case, "postProcessing", "stepTimers"), 0)
     tcol, total = data[:, columns.index("time")], \
         data[:, columns.index("total")]

@@ -12,9 +12,9 @@ import math
 
 import numpy as np
 
-from flapfoam import wingGeometry as geo
-from flapfoam.backgroundMesh import BACKGROUND, backgroundCellSize
-from flapfoam.blockMesh import (BlockMesh, nCellsGrowth, sizesGeometric)
+from flapfoam import wing_geometry as geo
+from flapfoam.background_mesh import BACKGROUND, backgroundCellSize
+from flapfoam.block_mesh import (BlockMesh, nCellsGrowth, sizesGeometric)
 
 
 # --------------------------------------------------------------------------

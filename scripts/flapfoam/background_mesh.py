@@ -11,8 +11,8 @@ import math
 
 import numpy as np
 
-from flapfoam import wingGeometry as geo
-from flapfoam.blockMesh import BlockMesh, FOAM_FOOTER, FOAM_HEADER
+from flapfoam import wing_geometry as geo
+from flapfoam.block_mesh import BlockMesh, FOAM_FOOTER, FOAM_HEADER
 
 # --------------------------------------------------------------------------
 # Background and motion envelope

@@ -8,7 +8,7 @@ drone's constant/dynamicMeshDict.eABA) at every point of a grid of the
 Wang kinematics (the imposedMotion entries of waveform flapping and
 pitching) and the mass, from rest over N whole cycles.
 
-    python3 -m flapfoam.qsSweep -grid "flapAmplitude=1.0:1.5:10
+    python3 -m flapfoam.qs_sweep -grid "flapAmplitude=1.0:1.5:10
         pitchAmplitude=0.5:1.0:10" [-dict FILE] [-cycles 5]
         [-stepsPerCycle 250] [-solver Newmark] [-nIter N] [-np 2]
         [-dir DIR] [-o PREFIX] [-map X,Y] [-hover PARAM] [-hoverTol 1e-6]
@@ -60,7 +60,7 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
-from flapfoam.foamDict import readFoamDict, setEntry
+from flapfoam.foam_dict import readFoamDict, setEntry
 
 # name: (imposedMotion waveform or None, key, allowed (lo, hi) open range)
 PARAMETERS = {
@@ -481,7 +481,7 @@ def hoverLine(param, r):
 
 def arguments(argv):
     parser = argparse.ArgumentParser(
-        prog="flapfoam.qsSweep", description=__doc__.split("\n\n")[0])
+        prog="flapfoam.qs_sweep", description=__doc__.split("\n\n")[0])
     default = os.path.join(os.environ.get("FLAPFOAM_PROJECT_DIR", "."),
                            "cases/singleWingDrone/constant/"
                            "dynamicMeshDict.eABA")
@@ -544,7 +544,7 @@ def main(argv=None):
                     "%s %.6g" % (n, r[n]) for n in grid if n != args.hover)
                     or "hover", hoverLine(args.hover, r)))
     except SweepError as e:
-        sys.exit("flapfoam.qsSweep: %s" % e)
+        sys.exit("flapfoam.qs_sweep: %s" % e)
 
 
 if __name__ == "__main__":

@@ -2,14 +2,14 @@
 #     This file is part of flapFoam, derived from OpenFOAM: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """
-The scaling model (flapfoam.scalingModel) against timed runs: read the
+The scaling model (flapfoam.scaling_model) against timed runs: read the
 archives of bench/scaling/measured (a .tar.gz of one level or several, or
 a folder with runs.tsv, pingPong.log and runs/<stencil>-<method>-np<N>/,
 or one holding such level folders), the medians over other rounds of a
-session (runTimed logs, summary.txt: flapfoam.timedRounds) in place of
+session (runTimed logs, summary.txt: flapfoam.timed_rounds) in place of
 one round's, calibrate the model's constants on some of the runs,
 compare its step with every run's, and the causes of one partition's
-PIMPLE against another's (flapfoam.scalingCauses).  numpy; scipy for
+PIMPLE against another's (flapfoam.scaling_causes).  numpy; scipy for
 calibrate.
 
 A run's measured step: rbd + overset + pimple of the step timers (max
@@ -33,10 +33,10 @@ import tempfile
 
 import numpy as np
 
-from flapfoam import (rankTables, scalingModel, solverLog, stepTimers,
-                      timedRounds)
+from flapfoam import (rank_tables, scaling_model, solver_log, step_timers,
+                      timed_rounds)
 
-STENCILS = {"octree": scalingModel.OCTREE, "ID": scalingModel.STOCK}
+STENCILS = {"octree": scaling_model.OCTREE, "ID": scaling_model.STOCK}
 LEVELS = ("coarse", "medium", "fine")
 PARTS = ("rbd", "overset", "pimple", "pimpleOversetInterpolate",
          "oversetStencilVoxels")
@@ -46,7 +46,7 @@ PARTS = ("rbd", "overset", "pimple", "pimpleOversetInterpolate",
 class Run:
     """One timed run: level, stencil (short: octree, ID), method, ranks,
     measured (medians of PARTS and "step"), iterations (pressure, per
-    step), decomposition (scalingModel.Decomposition), machine (alpha,
+    step), decomposition (scaling_model.Decomposition), machine (alpha,
     beta), session (the archive's label) and rounds (how many rounds the
     measured medians are over)."""
     level: str
@@ -55,7 +55,7 @@ class Run:
     ranks: int
     measured: dict
     iterations: float
-    decomposition: scalingModel.Decomposition
+    decomposition: scaling_model.Decomposition
     machine: tuple
     session: str = ""
     rounds: int = 1
@@ -146,14 +146,14 @@ def read_ping_pong(fname):
 def pressure_iterations(log, startup):
     """Mean over the steps after STARTUP of the p solves' iterations per
     step."""
-    counts = [row[2] for row in solverLog.read_log(log)]
+    counts = [row[2] for row in solver_log.read_log(log)]
     return float(np.mean(counts[startup:]))
 
 
 def read_medians(folder, startup):
     """Medians over the timed steps of PARTS and of the step (rbd +
     overset + pimple per step)."""
-    columns, data = stepTimers.read_input(folder, startup)
+    columns, data = step_timers.read_input(folder, startup)
     col = {c: data[:, i] for i, c in enumerate(columns)}
     zero = np.zeros(len(data))
     out = {p: float(np.median(col.get(p, zero))) for p in PARTS}
@@ -173,7 +173,7 @@ def read_rows(root):
     groups = {}
     for row in rows:
         folder = os.path.join(root, "runs", row["name"])
-        m = timedRounds.NAME.match(row["name"])
+        m = timed_rounds.NAME.match(row["name"])
         if row.get("rc") != "0" or not os.path.isdir(folder) or not m:
             continue
         key = (m.group(1), m.group(2), int(m.group(3)), bool(m.group(4)))
@@ -204,8 +204,8 @@ def read_level_runs(root, session, startup=3, renumbered=False):
              for c in medians[0]},
             float(np.mean([pressure_iterations(log, k)
                            for log, k in zip(logs, skip)])),
-            scalingModel.Decomposition.from_rank_report(
-                rankTables.read_table(logs[0], "oversetRankReport")),
+            scaling_model.Decomposition.from_rank_report(
+                rank_tables.read_table(logs[0], "oversetRankReport")),
             machine, session, len(rounds)))
     return runs
 
@@ -238,17 +238,17 @@ def rounds_of(tables, files, level_names=("coarse", "medium")):
     """{(level, stencil, method, ranks): (medians of step, rbd, overset,
     pimple over the rounds, rounds)} of TABLES [(summary text, level)]
     and FILES (runTimed logs, their tables in the order of LEVEL_NAMES, or
-    summary.txt; flapfoam.timedRounds), every text counted once."""
+    summary.txt; flapfoam.timed_rounds), every text counted once."""
     texts = {}
     for text, level in tables:
-        texts.setdefault(text, timedRounds.read_tables(text, [level]))
+        texts.setdefault(text, timed_rounds.read_tables(text, [level]))
     for fname in files:
         with open(fname) as f:
             text = f.read()
         if text not in texts:
-            texts[text] = timedRounds.read_file(fname, list(level_names))
+            texts[text] = timed_rounds.read_file(fname, list(level_names))
     timed = [t for found in texts.values() for t in found]
-    return {k[:4]: v for k, v in timedRounds.medians(
+    return {k[:4]: v for k, v in timed_rounds.medians(
         [t for t in timed if not t.renumbered]).items()}
 
 
@@ -291,7 +291,7 @@ def read_archives(paths, startup=3, rounds=(), level_names=("coarse",
 
 def serial_costs(serial, cal):
     """The Costs of a level and stencil from its serial Run."""
-    costs = scalingModel.Costs(serial.machine, (0.0, 0.0, 0.0), None, cal)
+    costs = scaling_model.Costs(serial.machine, (0.0, 0.0, 0.0), None, cal)
     n = float(serial.decomposition.cells.sum())
     costs.stencil = STENCILS[serial.stencil]
     costs.cCell = serial.measured["pimple"]/n
@@ -312,7 +312,7 @@ def model_steps(runs, cal, measured_iterations=False):
         if r.group not in serial:
             continue
         costs = serial_costs(serial[r.group], cal)
-        out[r.name] = scalingModel.predict(
+        out[r.name] = scaling_model.predict(
             costs, r.decomposition,
             r.iterations if measured_iterations else None)
     return out
@@ -342,11 +342,11 @@ def _log_fit(residual, start, bounds):
 
 
 # where calibrate's least squares start
-START = scalingModel.Calibration(pSat=14.0, cIter=2e-5, growth=0.06,
+START = scaling_model.Calibration(pSat=14.0, cIter=2e-5, growth=0.06,
                                  vParallel=0.025, bStock=0.1)
 
 
-def calibrate(runs, patterns=scalingModel.CALIBRATION_RUNS):
+def calibrate(runs, patterns=scaling_model.CALIBRATION_RUNS):
     """The Calibration fitted to the runs matching PATTERNS: growth to
     their pressure iterations; pSat and cIter to their PIMPLE (with their
     own iteration counts); vParallel and bStock to their overset part

@@ -3,9 +3,9 @@
 #     under the GNU General Public License v3 or later (COPYING).
 """
 The CFD run of a drone case against its quasi-steady run on the same tree
-(issue 13's verification): both runs' flight data (flightData.h5).
+(issue 13's verification): both runs' flight data (flight_data.h5).
 
-    python3 -m flapfoam.compareModels CFD_CASE QS_CASE [-o DIR] [-body wing]
+    python3 -m flapfoam.compare_models CFD_CASE QS_CASE [-o DIR] [-body wing]
         [-md FILE]
 
 Prints, and writes as a markdown table with -md: per whole flapping cycle
@@ -25,14 +25,14 @@ import sys
 
 import numpy as np
 
-from flapfoam import flightData
+from flapfoam import flight_data
 from flapfoam.plotting import cycleAxes, plt, save, shadeDownstrokes
 
 
 def run(case, body):
     """time, q, qDot, coefficients of body, frequency of a run."""
     try:
-        attrs, d = flightData.load(case)
+        attrs, d = flight_data.load(case)
     except (OSError, FileNotFoundError) as e:
         sys.exit("compareModels: %s: %s" % (case, e))
     key = "coefficients/%s" % body

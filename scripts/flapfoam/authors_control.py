@@ -8,7 +8,7 @@ The paper authors' flight controllers as flapFoam entries: their
 wangParametrization.C; their keys) rewritten as three imposedMotion entries
 and a `controller` (src/controllers, type PID) that apply the same laws:
 
-    python3 -m flapfoam.authorsControl DICT [-solver NAME] [-entry NAME]
+    python3 -m flapfoam.authors_control DICT [-solver NAME] [-entry NAME]
         [-body NAME] [-blend B] [-o FILE]
 
 DICT: their dynamicMeshDict (the model in solvers/NAME, the first with
@@ -50,7 +50,7 @@ import argparse
 import math
 import sys
 
-from flapfoam.foamDict import readFoamDict
+from flapfoam.foam_dict import readFoamDict
 
 TYPES = ("midStartControl_xzth_PD", "midStartControl_xzth_linearPD")
 LIMITS = {"amplitude": ("Aphi_min", "Aphi_max"),
@@ -197,7 +197,7 @@ class authorsEntry:
         loops = "\n".join("        " + l if l else l
                           for l in loops.splitlines())
         return ("// From the paper authors' entry %s (motionType %s):"
-                " python3 -m flapfoam.authorsControl\n%s"
+                " python3 -m flapfoam.authors_control\n%s"
                 "controller\n{\n    type PID; update cycle;"
                 " cycleOf flapping; blend %.17g; log on;\n    loops\n    {\n"
                 "%s\n    }\n}\n" % (self.name, self.kind, motions, blend,
@@ -206,7 +206,7 @@ class authorsEntry:
 
 def main(argv=None):
     ap = argparse.ArgumentParser(
-        prog="flapfoam.authorsControl",
+        prog="flapfoam.authors_control",
         description="The paper authors' midStartControl_xzth_PD / _linearPD"
         " entry as flapFoam imposedMotion entries and a PID controller.")
     ap.add_argument("dict")

@@ -36,7 +36,7 @@ import sys
 
 import numpy as np
 
-from flapfoam.stepTimers import GROUPS, read_input, summary
+from flapfoam.step_timers import GROUPS, read_input, summary
 
 
 def plot(labels, means, columns_list, args):

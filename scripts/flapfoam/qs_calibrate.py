@@ -7,7 +7,7 @@ on a CFD run, as Lee et al. (2016) did on Fluent runs: the coefficients
 CL, CD0, CD1 fitted to the run's fluid force on the wing by linear least
 squares.
 
-    python3 -m flapfoam.qsCalibrate CASE [-dict DICT] [-wing NAME]
+    python3 -m flapfoam.qs_calibrate CASE [-dict DICT] [-wing NAME]
         [-skip N] [-components xz|xyz] [-out FILE]
 
 The blade-element force is linear in the coefficients: per strip
@@ -43,9 +43,9 @@ import sys
 
 import numpy as np
 
-from flapfoam.flightData import find
-from flapfoam.foamDict import multibodyCoeffs
-from flapfoam.quasiSteady import Wing, vec
+from flapfoam.flight_data import find
+from flapfoam.foam_dict import multibodyCoeffs
+from flapfoam.quasi_steady import Wing, vec
 
 COEFFS = ("CL", "CD0", "CD1")
 

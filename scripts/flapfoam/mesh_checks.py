@@ -12,7 +12,7 @@ Checks of the single-wing drone overset mesh (constant/polyMesh):
     target of the level (tiny: <= 30k; coarse/medium/fine/finePlus: within
     15 % of 71k/214k/501k/808k, paper Fig. "grid study");
   - area of the "wing" patch against the analytic wetted area of the plate
-    (2 S + t (P/2 + c_r), flapfoam/wingGeometry.py): within 2 %;
+    (2 S + t (P/2 + c_r), flapfoam/wing_geometry.py): within 2 %;
   - patches present with the expected types (wing: wall, oversetPatch:
     overset, farField: patch).
 
@@ -65,8 +65,8 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from flapfoam import foamMesh as fm
-from flapfoam import wingGeometry as geo
+from flapfoam import foam_mesh as fm
+from flapfoam import wing_geometry as geo
 from flapfoam.checks import Checks
 from flapfoam.tables import timeValue
 

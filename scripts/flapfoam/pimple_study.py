@@ -5,11 +5,11 @@
 The table of the PIMPLE study (bench/pimple/run): per level, rank count and
 setting, what a simulated flapping cycle cost and how far its flight is
 from the paper's settings on the same mesh (the accuracy guard,
-flapfoam.pimpleGuard).
+flapfoam.pimple_guard).
 
-    python3 -m flapfoam.pimpleStudy DIR [--cycles N] [--reference NAME]
+    python3 -m flapfoam.pimple_study DIR [--cycles N] [--reference NAME]
                                     [-o OUT.md]
-    python3 -m flapfoam.pimpleStudy DIR --steps K --settings NAME...
+    python3 -m flapfoam.pimple_study DIR --steps K --settings NAME...
                                     [-o OUT.md]
 
 DIR holds the runs <level>-np<N>-<setting> (bench/pimple/run) and, for
@@ -23,7 +23,7 @@ measured share of what it allows (100 % at the limit) and PASS/FAIL.
 With --steps K: the fixed-step runs <level>-np<N>-<setting>-r<round> of
 bench/pimple/run -steps instead: per run the median per step of every
 step-timer column after K start-up steps, then the median over the rounds;
-the table gives the step, pimple and its split (stepTimers.pimple_split)
+the table gives the step, pimple and its split (step_timers.pimple_split)
 per level, ranks and setting (in the order of --settings), and the step's
 and pimple's ratio of the first setting's to this one's.
 """
@@ -36,8 +36,8 @@ import sys
 
 import numpy as np
 
-from flapfoam import pimpleGuard
-from flapfoam import stepTimers
+from flapfoam import pimple_guard
+from flapfoam import step_timers
 
 RUN = re.compile(r"^(\w+)-np(\d+)-([\w.+]+)$")
 STEPS_RUN = re.compile(r"^(\w+)-np(\d+)-([\w.+]+)-r(\d+)$")
@@ -50,7 +50,7 @@ class StudyRun:
     ranks: int
     setting: str
     edits: list
-    cycles: pimpleGuard.Cycles
+    cycles: pimple_guard.Cycles
 
 
 def read_settings(path):
@@ -72,7 +72,7 @@ def read_runs(folder, n_cycles):
         if not (m and os.path.isdir(path)):
             continue
         try:
-            cycles = pimpleGuard.read_run(path, n_cycles)
+            cycles = pimple_guard.read_run(path, n_cycles)
         except (SystemExit, OSError, KeyError, ValueError) as err:
             print("pimpleStudy: %s left out: %s" % (name, err))
             continue
@@ -84,7 +84,7 @@ def read_runs(folder, n_cycles):
 def row(run, ref, n_cycles):
     """The table line of a run against its reference."""
     c, r = run.cycles, ref.cycles
-    checks = pimpleGuard.guard(r, c)
+    checks = pimple_guard.guard(r, c)
     shares = " | ".join("%.0f %%" % (100*k.ratio) for k in checks)
     judged = [k for k in checks if k.counts]
     verdict = "reference" if run is ref else (
@@ -142,7 +142,7 @@ def step_medians(folder, startup):
         m = STEPS_RUN.match(name)
         if not (m and os.path.isdir(os.path.join(folder, name))):
             continue
-        columns, data = stepTimers.read_input(
+        columns, data = step_timers.read_input(
             os.path.join(folder, name, "postProcessing", "stepTimers"),
             startup)
         key = (m.group(1), int(m.group(2)), m.group(3))
@@ -169,7 +169,7 @@ def steps_table(medians, rounds, settings):
             if m is None:
                 continue
             first = first or m
-            s = stepTimers.pimple_split(m) or {}
+            s = step_timers.pimple_split(m) or {}
             lines.append(
                 "| %s | %d | %s | %d | %.4f | %.4f | %s | %s | %s | %s | %s | "
                 "%.2f | %.2f |" % (
@@ -224,7 +224,7 @@ def main(argv=None):
         "continuity: the reference's error); at most 100 % passes.  The "
         "step-by-step C_zI(t) is informative, not in the verdict: the "
         "overset's single-step spikes of C_zI reach about a quarter of its "
-        "range, at times that move with the steps (flapfoam.pimpleGuard).",
+        "range, at times that move with the steps (flapfoam.pimple_guard).",
         "",
         "Settings:"] + settings_lines(runs)
     return write(lines, args.out)

@@ -93,7 +93,7 @@ class Calibration:
     iterations: float = 91.2
 
 
-# Fitted by flapfoam.scalingValidate.calibrate on CALIBRATION_RUNS (the
+# Fitted by flapfoam.scaling_validate.calibrate on CALIBRATION_RUNS (the
 # hierarchical and scotch runs) of both sessions of bench/scaling/measured
 # (16-core Xeon, one socket: scaling-16core-*.tar.gz, one round, and
 # device-2026-11-26, the medians of three rounds); simple, metis and

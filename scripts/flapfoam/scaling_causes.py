@@ -4,7 +4,7 @@
 """
 Why one partition's PIMPLE costs more than another's at the same ranks:
 the measured gap split cause by cause with the calibrated model
-(flapfoam.scalingModel, runs of flapfoam.scalingValidate).
+(flapfoam.scaling_model, runs of flapfoam.scaling_validate).
 
 For a run A against a reference B (the same level, stencil and ranks),
 the model's PIMPLE of the slowest rank,
@@ -26,7 +26,7 @@ run's.
 
 import numpy as np
 
-from flapfoam import scalingModel, scalingValidate
+from flapfoam import scaling_model, scaling_validate
 
 CAUSES = ("cells", "iterations", "interfaces", "halo bytes")
 TWIN = {"octree": "ID", "ID": "octree"}
@@ -48,7 +48,7 @@ def rank_pimple(costs, total, x):
     i1 = costs.serial_iterations()
     cells, iterations, interfaces, values = x
     return iterations/i1*(
-        costs.cCell*scalingModel.shared_bandwidth(cells, total, cal.pSat)
+        costs.cCell*scaling_model.shared_bandwidth(cells, total, cal.pSat)
         + i1*cal.cIter*interfaces
         + costs.beta*costs.sBytes*8*values)
 
@@ -56,9 +56,9 @@ def rank_pimple(costs, total, x):
 def attribute(a, b, costs):
     """{cause: seconds} of run A's model PIMPLE over B's, cause by cause
     (CAUSES, in order)."""
-    xa = slowest_inputs(a, scalingModel.predict(costs, a.decomposition,
+    xa = slowest_inputs(a, scaling_model.predict(costs, a.decomposition,
                                                 a.iterations))
-    x = slowest_inputs(b, scalingModel.predict(costs, b.decomposition,
+    x = slowest_inputs(b, scaling_model.predict(costs, b.decomposition,
                                                b.iterations))
     out = {}
     total = float(a.decomposition.cells.sum())
@@ -84,7 +84,7 @@ def gaps(runs, cal):
         if not group or a.group not in serial:
             continue
         b = min(group, key=lambda r: r.measured["pimple"])
-        costs = scalingValidate.serial_costs(serial[a.group], cal)
+        costs = scaling_validate.serial_costs(serial[a.group], cal)
         row = {"run": a.name, "method": a.method, "reference": b.method,
                "ranks": a.ranks,
                "gap": a.measured["pimple"] - b.measured["pimple"],

@@ -14,9 +14,9 @@ import os
 import sys
 from types import SimpleNamespace
 
-from flapfoam.backgroundMesh import BACKGROUND, backgroundMesh, topoSetRefine
-from flapfoam.blockMesh import writeCase
-from flapfoam.wingMesh import (LEVELS, checkBlockSides, levelComponent,
+from flapfoam.background_mesh import BACKGROUND, backgroundMesh, topoSetRefine
+from flapfoam.block_mesh import writeCase
+from flapfoam.wing_mesh import (LEVELS, checkBlockSides, levelComponent,
                                sweptEnvelope, wingComponent)
 
 

@@ -7,7 +7,7 @@ Plots of a body-wing drone run (Allrun calls it at the end of a run).
     scripts/plotRun.py [-case DIR] [-o OUTDIR]
 
 Reads the run's flight data (postProcessing/flightData/<start>/
-flightData.h5, flapfoam.flightData) and writes, in OUTDIR
+flight_data.h5, flapfoam.flight_data) and writes, in OUTDIR
 (default DIR/plots):
 
   trajectory.png         x-z path of the body's centre of mass [mm];
@@ -36,8 +36,8 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from flapfoam import flightData
-from flapfoam.foamDict import multibodyCoeffs
+from flapfoam import flight_data
+from flapfoam.foam_dict import multibodyCoeffs
 from flapfoam.plotting import (cycleAxes, path, plt, save, shadeDownstrokes,
                                stepTimers)
 from flapfoam.wang import wangJoints
@@ -45,7 +45,7 @@ from flapfoam.wang import wangJoints
 
 def readRun(case):
     """The run's flight data and Wang joints."""
-    attrs, d = flightData.load(case)
+    attrs, d = flight_data.load(case)
     t = d["time"]
     wang = wangJoints(multibodyCoeffs(os.path.join(case, "constant",
                                                    "dynamicMeshDict")))
@@ -135,7 +135,7 @@ def main():
     out = a.output or os.path.join(a.case, "plots")
     os.makedirs(out, exist_ok=True)
 
-    if flightData.find(a.case) is None:
+    if flight_data.find(a.case) is None:
         sys.exit("plotRun: no postProcessing/flightData/*/flightData.h5 in %s"
                  % a.case)
     r = readRun(a.case)

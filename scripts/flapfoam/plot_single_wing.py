@@ -57,9 +57,9 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from flapfoam import flightData
-from flapfoam import wingGeometry as geo
-from flapfoam.foamDict import multibodyCoeffs
+from flapfoam import flight_data
+from flapfoam import wing_geometry as geo
+from flapfoam.foam_dict import multibodyCoeffs
 from flapfoam.plotting import path, plt, save, shadeDownstrokes, stepTimers
 from flapfoam.tables import joinedTable, startFolders
 from flapfoam.wang import imposedJoints
@@ -84,14 +84,14 @@ def readRun(case, dictPath):
     ref = referenceValues(multibodyCoeffs(dictPath))
 
     base = os.path.join(case, "postProcessing", "eABAMeshMotion")
-    tables = flightData.tables(case)
+    tables = flight_data.tables(case)
     if tables is not None:
         jcols, J, bcols, B = tables
         source = "flightData.h5"
-        print("plotRun: reading %s" % flightData.find(case))
+        print("plotRun: reading %s" % flight_data.find(case))
     else:
         if not startFolders(base):
-            sys.exit("plotRun: no %s/<time>/joints.dat and no flightData.h5"
+            sys.exit("plotRun: no %s/<time>/joints.dat and no flight_data.h5"
                      % base)
         jcols, J = joinedTable(base, "joints.dat", keepEarlierAtStart=False)
         bcols, B = joinedTable(base, "bodies.dat", keepEarlierAtStart=True)

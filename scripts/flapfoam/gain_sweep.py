@@ -5,16 +5,16 @@
 A gain sweep of a drone's flight controller (issue 14, src/controllers)
 on the quasi-steady (QS) model: a closed-loop flight from rest at every
 point of a grid of the controller's gains, and how well each holds its
-set-points (flapfoam.controlPlot's metrics).
+set-points (flapfoam.control_plot's metrics).
 
-    python3 -m flapfoam.gainSweep -grid "height.z.Kp=-20:-2:6
+    python3 -m flapfoam.gain_sweep -grid "height.z.Kp=-20:-2:6
         height.z.Kd=-6:0:4" [-cycles 20] [-deltaT 1e-4] [-np 2]
         [-case CASE] [-variant control] [-dir DIR] [-o PREFIX]
         [-band B1,B2,... | -band LOOP.TERM=B,...] [-settle T] [-map X,Y]
         [-keep]
 
 Grid: NAME=LO:HI:N (N values, LO and HI included), NAME=V1,V2,... or
-NAME=V (flapfoam.qsSweep's grid), NAME = LOOP.TERM.GAIN, GAIN one of Kp Ki
+NAME=V (flapfoam.qs_sweep's grid), NAME = LOOP.TERM.GAIN, GAIN one of Kp Ki
 Kd rateSetPoint (a constant): the entry eABAMeshMotionCoeffs/controller/
 loops/LOOP/terms/TERM/GAIN of the case's dictionary with the variant (the
 dictionary's value, or none, elsewhere).  The case (default: the
@@ -30,7 +30,7 @@ over 20 cycles); a row of flight data every 25 steps.
 Writes PREFIX.csv: per point the gains, per controlled quantity
 LOOP.TERM its settlingTime, maxAbsError, meanError, rmsError and inBand
 after the settling time -settle T (default: half of the run), in SI units
-(flapfoam.controlPlot, with its -band: the bands, defaults position
+(flapfoam.control_plot, with its -band: the bands, defaults position
 0.01 m, orientation 0.05 rad), then inBand (every quantity within its
 band after T), score (the largest maxAbsError/band), status (ok, or
 failed: rigidBodySimulate's exit) and seconds.  PREFIX.png: heat-maps of
@@ -52,9 +52,9 @@ import time
 
 import numpy as np
 
-from flapfoam import controlPlot
-from flapfoam.controlPlot import ControlPlotError
-from flapfoam.qsSweep import (Sweep, SweepError, edges, gridPoints, mapPair,
+from flapfoam import control_plot
+from flapfoam.control_plot import ControlPlotError
+from flapfoam.qs_sweep import (Sweep, SweepError, edges, gridPoints, mapPair,
                               parseGrid, writeTable)
 
 GAINS = ("Kp", "Ki", "Kd", "rateSetPoint")
@@ -99,7 +99,7 @@ class Template:
             raise SweepError("%s -model quasiSteady -variant %s -cycles 1"
                              " failed (exit %d, %s): %s" % (allrun, variant,
                                                             rc, log, tail))
-        _, self.terms = controlPlot.controlledTerms(self.folder)
+        _, self.terms = control_plot.controlledTerms(self.folder)
         self.bounds = {"%s.%s" % (s.label, g): (-math.inf, math.inf)
                        for s in self.terms for g in GAINS}
         self.dict = os.path.join(self.folder, "constant", "dynamicMeshDict")
@@ -163,12 +163,12 @@ class GainSweep(Sweep):
                                  stdin=subprocess.DEVNULL)
         row = {"status": "ok" if rc == 0 else "failed (exit %d)" % rc,
                "seconds": time.time() - start}
-        run = controlPlot.Run(case) if rc == 0 else None
+        run = control_plot.Run(case) if rc == 0 else None
         ratios = []
         for s in self.model.terms:
             band = self.bands[s.label]
             m = run.metrics(s.label, band, self.settle) if run else \
-                dict.fromkeys(controlPlot.METRICS, math.nan)
+                dict.fromkeys(control_plot.METRICS, math.nan)
             row.update(("%s.%s" % (s.label, k), v) for k, v in m.items())
             ratios.append(m["maxAbsError"]/band)
         row["score"] = float(np.max(ratios))     # NaN if one is
@@ -256,7 +256,7 @@ def report(rows, grid, terms, settle):
 
 def arguments(argv):
     parser = argparse.ArgumentParser(
-        prog="flapfoam.gainSweep", description=__doc__.split("\n\n")[1])
+        prog="flapfoam.gain_sweep", description=__doc__.split("\n\n")[1])
     default = os.path.join(os.environ.get("FLAPFOAM_PROJECT_DIR", "."),
                            "cases/bodyWingDrone")
     parser.add_argument("-grid", required=True)
@@ -289,7 +289,7 @@ def main(argv=None):
                             args.deltaT, os.path.abspath(args.dir))
         grid = parseGrid(args.grid, template.bounds)
         pair = mapPair(grid, args.map)
-        bands = controlPlot.parseBands(args.band, template.terms)
+        bands = control_plot.parseBands(args.band, template.terms)
         end = args.cycles*template.period
         settle = 0.5*end if args.settle is None else args.settle
         if not 0 <= settle < end:
@@ -312,7 +312,7 @@ def main(argv=None):
         plot((args.o + ".png", title), rows, grid, pair, bands)
         report(rows, grid, template.terms, settle)
     except (SweepError, ControlPlotError) as e:
-        sys.exit("flapfoam.gainSweep: %s" % e)
+        sys.exit("flapfoam.gain_sweep: %s" % e)
 
 
 if __name__ == "__main__":

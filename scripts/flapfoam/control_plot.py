@@ -6,7 +6,7 @@ The closed-loop flight of controlled drone runs (issue 14, src/
 controllers): the controlled quantities against their set-points, the
 controller's outputs, and how well the set-points are held.
 
-    python3 -m flapfoam.controlPlot RUN [RUN2 ...] [-o DIR] [-settle T]
+    python3 -m flapfoam.control_plot RUN [RUN2 ...] [-o DIR] [-settle T]
         [-band B1,B2,... | -band LOOP.TERM=B,...] [-check]
 
 RUN: a run folder with constant/dynamicMeshDict (its eABAMeshMotionCoeffs/
@@ -49,9 +49,9 @@ import tempfile
 
 import numpy as np
 
-from flapfoam import flightData
+from flapfoam import flight_data
 from flapfoam.checks import report
-from flapfoam.foamDict import readFoamDict
+from flapfoam.foam_dict import readFoamDict
 
 # quantity: (dataset of bodies/BODY, display scale, display unit, SI unit,
 # default band [SI])
@@ -188,8 +188,8 @@ class Run:
         self.name = os.path.basename(os.path.normpath(case))
         self.controller, self.terms = controlledTerms(case)
         try:
-            _, data = flightData.load(case)
-            with h5py.File(flightData.find(case), "r") as f:
+            _, data = flight_data.load(case)
+            with h5py.File(flight_data.find(case), "r") as f:
                 columns = f["control"].attrs["columns"].split() \
                     if "control" in f else []
         except (OSError, FileNotFoundError) as e:
@@ -351,7 +351,7 @@ def plotOutputs(runs, out):
 
 
 def arguments(argv):
-    parser = argparse.ArgumentParser(prog="flapfoam.controlPlot",
+    parser = argparse.ArgumentParser(prog="flapfoam.control_plot",
                                      description=__doc__.split("\n\n")[1])
     parser.add_argument("runs", nargs="+", metavar="RUN")
     parser.add_argument("-o", metavar="DIR")
@@ -374,7 +374,7 @@ def main(argv=None):
         rows = metricRows(runs, args.band, settle)
         out = args.o or os.path.join(args.runs[0], "plots")
         os.makedirs(out, exist_ok=True)
-        from flapfoam.qsSweep import writeTable
+        from flapfoam.qs_sweep import writeTable
         writeTable(os.path.join(out, "control-metrics.csv"), rows,
                    ["run", "quantity"])
         printTable(rows, runs)
@@ -383,7 +383,7 @@ def main(argv=None):
         print("controlPlot: settle %g s; %s/control-{states,outputs}.png,"
               " control-metrics.csv" % (settle, out))
     except ControlPlotError as e:
-        sys.exit("flapfoam.controlPlot: %s" % e)
+        sys.exit("flapfoam.control_plot: %s" % e)
     status = 0
     if args.check:
         for row in rows:

@@ -16,7 +16,7 @@ non-zero on failure.
         k: |sim - analytic| / (A omega^k), A the amplitude, omega = 2 pi f.
 
     checkRun.py timers CASE [--tol 0.05] [--nStartup 2]
-        stepTimers.dat (all start folders): closure of rbd + overset +
+        step_timers.dat (all start folders): closure of rbd + overset +
         pimple against total, as 1 - mean(rbd + overset + pimple)/mean(total)
         over the steps after the first nStartup of each file (PASS if below
         tol), and the largest per-step |total - sum|/total (reported: on
@@ -66,8 +66,8 @@ import sys
 
 import numpy as np
 
-from flapfoam import checks, stepTimers
-from flapfoam.foamDict import multibodyCoeffs, readFoamDict, readState
+from flapfoam import checks, step_timers
+from flapfoam.foam_dict import multibodyCoeffs, readFoamDict, readState
 from flapfoam.tables import joinedTable, startFolders, timeFolders
 from flapfoam.wang import imposedJoints
 
@@ -182,11 +182,11 @@ def pimple_parts(rows, ranks):
 
 
 def checkTimers(args):
-    files = stepTimers.find_files(os.path.join(args.case, "postProcessing",
+    files = step_timers.find_files(os.path.join(args.case, "postProcessing",
                                         "stepTimers"))
     rows = []
     for f in files:
-        r = stepTimers.read_file(f)
+        r = step_timers.read_file(f)
         rows.extend(r[args.nStartup:])
     if not rows:
         return report(False, args.name or "timers", "no steps after the "
@@ -197,7 +197,7 @@ def checkTimers(args):
     perStep = np.abs(total - parts)/total
     share = {k: np.mean([r[k] for r in rows])/total.mean()
              for k in ("rbd", "overset", "pimple")}
-    ranks = [r for f in files for r in stepTimers.read_ranks(
+    ranks = [r for f in files for r in step_timers.read_ranks(
         os.path.join(os.path.dirname(f), "stepTimersRanks.dat"))]
     solves = pimple_parts(rows, ranks)
     return report(closureMean <= args.tol and solves is not None
