@@ -181,8 +181,8 @@ quasiSteady()
         fail "[$label] Allrun -model quasiSteady $* failed (see $log)"
         return
     fi
-    flightData "$label" check "$dir" --rows "$rows" --attr level=none \
-        --attr stencil=none --attr model=quasiSteady
+    flightData "$label" check "$dir" -rows "$rows" -attr level=none \
+        -attr stencil=none -attr model=quasiSteady
     labelled "$label" "$python" -m flapfoam.result_checks \
         flight-data-joints "$dir"
 }
@@ -207,8 +207,8 @@ vacuum()
     done
     if rigidBodySimulate -case "$rbs" > "$rbs/log.rigidBodySimulate" 2>&1
     then
-        result "$label" --name rigidBodySimulate rbs "$run" "$rbs" \
-            --tol "$tol"
+        result "$label" -name rigidBodySimulate rbs "$run" "$rbs" \
+            -tol "$tol"
     else
         fail "[$label] rigidBodySimulate failed" \
              "(see $rbs/log.rigidBodySimulate)"

@@ -69,8 +69,8 @@ def solver_pids(name, ancestor):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("-p", "--process", default="overPimpleDyMFoam")
-    parser.add_argument("-o", "--output")
+    parser.add_argument("-p", dest="process", default="overPimpleDyMFoam")
+    parser.add_argument("-o", dest="output")
     parser.add_argument("command", nargs=argparse.REMAINDER)
     args = parser.parse_args()
     command = args.command[1:] if args.command[:1] == ["--"] else args.command

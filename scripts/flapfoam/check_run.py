@@ -6,7 +6,7 @@ Checks of single-wing drone runs (used by Alltest).  Each prints one
 "PASS <name> <numbers>" or "FAIL <name> <numbers>" line; the exit status is
 non-zero on failure.
 
-    checkRun.py prescribed CASE [--tol 1e-12] [--tolTable 1e-11]
+    checkRun.py prescribed CASE [-tol 1e-12] [-tolTable 1e-11]
         The prescribed joints (imposedMotion entries of CASE/constant/
         dynamicMeshDict) against the analytic Wang motion at every step:
         q, qDot, qDdot from <time>/uniform/rigidBodyMotionState (17
@@ -15,7 +15,7 @@ non-zero on failure.
         digits: its rounding alone is up to ~4e-12).  Error of derivative
         k: |sim - analytic| / (A omega^k), A the amplitude, omega = 2 pi f.
 
-    checkRun.py timers CASE [--tol 0.05] [--nStartup 2]
+    checkRun.py timers CASE [-tol 0.05] [-nStartup 2]
         step_timers.dat (all start folders): closure of rbd + overset +
         pimple against total, as 1 - mean(rbd + overset + pimple)/mean(total)
         over the steps after the first nStartup of each file (PASS if below
@@ -27,23 +27,23 @@ non-zero on failure.
         1 % at every step (parallel: per rank, in its own means of
         stepTimersRanks.dat).
 
-    checkRun.py compare A B [--columns q_0,qDot_0,...] [--tol 1e-6]
-                            [--rows last|all] [--state]
+    checkRun.py compare A B [-columns q_0,qDot_0,...] [-tol 1e-6]
+                            [-rows last|all] [-state]
         joints.dat of case A against case B (rows matched by time).
         Relative difference of a value: |a - b| / max(|a|, |b|, floor) with
         floor = 1e-3 x the largest |value| of that column over A's rows, so
         that a quantity passing through zero at the compared instant is
         judged against its own scale rather than a vanishing denominator.
-        --state also compares the last <time>/uniform/rigidBodyMotionState
+        -state also compares the last <time>/uniform/rigidBodyMotionState
         (17 digits; q, qDot, qDdot of every joint, same floor).
 
-    checkRun.py initial CASE --q 2:0,3:0.785398163397 [--qDotSign 2:-1]
-                             [--tol 1e-12]
+    checkRun.py initial CASE -q 2:0,3:0.785398163397 [-qDotSign 2:-1]
+                             [-tol 1e-12]
         The first row of joints.dat: q_i = value (absolute difference) and
         the sign of qDot_i (e.g. -midStroke: phi(0) = 0 decreasing,
         alpha(0) = -45 deg).
 
-    checkRun.py dictionary RUN GIVEN [--changed KEY ...]
+    checkRun.py dictionary RUN GIVEN [-changed KEY ...]
         Every entry of the dictionary file GIVEN (the user's, e.g. the
         case's constant/dynamicMeshDict.eABA) holds the same value in RUN
         (the run folder's copy, rewritten by Allrun's foamDictionary
@@ -52,7 +52,7 @@ non-zero on failure.
         e.g. eABAMeshMotionCoeffs/fluidLoad) are the entries Allrun was
         asked to change: present in RUN, not compared.
 
-    checkRun.py rbs A B [--tol 1e-10]
+    checkRun.py rbs A B [-tol 1e-10]
         Every row of A's postProcessing/eABAMeshMotion/0/joints.dat against
         B's postProcessing/rigidBodySimulate/0/joints.dat (all columns, the
         same relative difference).
@@ -372,47 +372,47 @@ def checkDictionary(args):
 def main():
     ap = argparse.ArgumentParser(
         description="Checks of single-wing drone runs (PASS/FAIL lines)")
-    ap.add_argument("--name", default=None, help="name on the line")
+    ap.add_argument("-name", default=None, help="name on the line")
     sub = ap.add_subparsers(dest="cmd", required=True)
 
     p = sub.add_parser("prescribed")
     p.add_argument("case")
-    p.add_argument("--tol", type=float, default=1e-12)
-    p.add_argument("--tolTable", type=float, default=1e-11)
+    p.add_argument("-tol", type=float, default=1e-12)
+    p.add_argument("-tolTable", type=float, default=1e-11)
     p.set_defaults(func=checkPrescribed)
 
     p = sub.add_parser("timers")
     p.add_argument("case")
-    p.add_argument("--tol", type=float, default=0.05)
-    p.add_argument("--nStartup", type=int, default=2)
+    p.add_argument("-tol", type=float, default=0.05)
+    p.add_argument("-nStartup", type=int, default=2)
     p.set_defaults(func=checkTimers)
 
     p = sub.add_parser("compare")
     p.add_argument("a")
     p.add_argument("b")
-    p.add_argument("--columns", default=None)
-    p.add_argument("--tol", type=float, default=1e-6)
-    p.add_argument("--rows", choices=("last", "all"), default="last")
-    p.add_argument("--state", action="store_true")
+    p.add_argument("-columns", default=None)
+    p.add_argument("-tol", type=float, default=1e-6)
+    p.add_argument("-rows", choices=("last", "all"), default="last")
+    p.add_argument("-state", action="store_true")
     p.set_defaults(func=checkCompare)
 
     p = sub.add_parser("initial")
     p.add_argument("case")
-    p.add_argument("--q", required=True)
-    p.add_argument("--qDotSign", default=None)
-    p.add_argument("--tol", type=float, default=1e-12)
+    p.add_argument("-q", required=True)
+    p.add_argument("-qDotSign", default=None)
+    p.add_argument("-tol", type=float, default=1e-12)
     p.set_defaults(func=checkInitial)
 
     p = sub.add_parser("dictionary")
     p.add_argument("run")
     p.add_argument("given")
-    p.add_argument("--changed", nargs="*", default=[])
+    p.add_argument("-changed", nargs="*", default=[])
     p.set_defaults(func=checkDictionary)
 
     p = sub.add_parser("rbs")
     p.add_argument("a")
     p.add_argument("b")
-    p.add_argument("--tol", type=float, default=1e-10)
+    p.add_argument("-tol", type=float, default=1e-10)
     p.set_defaults(func=checkRbs)
 
     args = ap.parse_args()

@@ -7,18 +7,18 @@ A run's file is postProcessing/flightData/<start>/flightData.h5 (the
 flightData function object, src/flightData): the earliest start folder that
 holds one (restarts append to it).
 
-    flightData.py check CASE [--rows N] [--attr KEY=VALUE ...] [--log LOG]
+    flightData.py check CASE [-rows N] [-attr KEY=VALUE ...] [-log LOG]
         one file; every dataset has the same rows; time strictly increasing
-        with a uniform step (fixed-step runs; --variableStep to skip); no
+        with a uniform step (fixed-step runs; -variableStep to skip); no
         NaN but in the first row's loads and timers (the initial state);
         the root attributes case, level, stencil, nRanks, decomposition,
-        commit present (and equal to KEY=VALUE); with --rows exactly N rows;
-        with --log, a solver log of a run that was killed: every step the
+        commit present (and equal to KEY=VALUE); with -rows exactly N rows;
+        with -log, a solver log of a run that was killed: every step the
         log shows completed (a later "Time =" line) has its row; with
-        --zero DATASET:i,j columns i, j exactly 0 in every row, with
-        --moving DATASET:i column i not 0 in the last row.
-    flightData.py compare REF CASE [--tol T] [--timeTol S] [--datasets a,b]
-                  [--exclude timers]
+        -zero DATASET:i,j columns i, j exactly 0 in every row, with
+        -moving DATASET:i column i not 0 in the last row.
+    flightData.py compare REF CASE [-tol T] [-timeTol S] [-datasets a,b]
+                  [-exclude timers]
         the same datasets and rows, time equal (to S seconds: a restart
         starts from the written time, a straight run sums its steps; default
         0: identical), every other dataset
@@ -296,19 +296,19 @@ def main():
     sub = ap.add_subparsers(dest="command", required=True)
     c = sub.add_parser("check")
     c.add_argument("case")
-    c.add_argument("--rows", type=int)
-    c.add_argument("--attr", action="append", default=[])
-    c.add_argument("--log")
-    c.add_argument("--variableStep", action="store_true")
-    c.add_argument("--zero", action="append", default=[])
-    c.add_argument("--moving", action="append", default=[])
+    c.add_argument("-rows", type=int)
+    c.add_argument("-attr", action="append", default=[])
+    c.add_argument("-log")
+    c.add_argument("-variableStep", action="store_true")
+    c.add_argument("-zero", action="append", default=[])
+    c.add_argument("-moving", action="append", default=[])
     m = sub.add_parser("compare")
     m.add_argument("ref")
     m.add_argument("case")
-    m.add_argument("--tol", type=float, default=0.0)
-    m.add_argument("--timeTol", type=float, default=0.0)
-    m.add_argument("--datasets")
-    m.add_argument("--exclude", default="timers")
+    m.add_argument("-tol", type=float, default=0.0)
+    m.add_argument("-timeTol", type=float, default=0.0)
+    m.add_argument("-datasets")
+    m.add_argument("-exclude", default="timers")
     a = ap.parse_args()
     return check(a) if a.command == "check" else compare(a)
 

@@ -26,10 +26,10 @@ passes if both are at least 1.8 (or the errors are at round-off) and, on
 the pendulums, its error at deltaT 1e-4 is below 2e-5 rad; on the
 staggered drone if both are within 0.8-1.2.
 
-    python3 -m flapfoam.integrator_order [--systems ...] [--solvers ...]
-        [--nIter ...] [--dir DIR] [--jobs J] [--out TABLE.md]
+    python3 -m flapfoam.integrator_order [-systems ...] [-solvers ...]
+        [-nIter ...] [-dir DIR] [-jobs J] [-out TABLE.md]
 
-prints one PASS or FAIL line a combination and the table (also to --out);
+prints one PASS or FAIL line a combination and the table (also to -out);
 exit status 1 if one fails.
 """
 
@@ -299,15 +299,15 @@ def evaluate(combinations, root, jobs):
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--systems", nargs="+", default=list(SYSTEMS),
+    parser.add_argument("-systems", nargs="+", default=list(SYSTEMS),
                         choices=list(SYSTEMS))
-    parser.add_argument("--solvers", nargs="+", default=list(SOLVERS),
+    parser.add_argument("-solvers", nargs="+", default=list(SOLVERS),
                         choices=SOLVERS)
-    parser.add_argument("--nIter", nargs="+", default=list(NITERS),
+    parser.add_argument("-nIter", nargs="+", default=list(NITERS),
                         choices=NITERS)
-    parser.add_argument("--dir", default="/tmp/flapFoam-integratorOrder")
-    parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
-    parser.add_argument("--out", help="the table, markdown")
+    parser.add_argument("-dir", default="/tmp/flapFoam-integratorOrder")
+    parser.add_argument("-jobs", type=int, default=os.cpu_count() or 1)
+    parser.add_argument("-out", help="the table, markdown")
     args = parser.parse_args(argv)
     combinations = [Combination(SYSTEMS[s], solver, n)
                     for s in args.systems for solver in args.solvers

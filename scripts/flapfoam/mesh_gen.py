@@ -21,19 +21,19 @@ from flapfoam.wing_mesh import (LEVELS, checkBlockSides, levelComponent,
 
 
 def parseArgs(doc, levels, argv=None):
-    """meshGen.py <level> [-o DIR] [--phi DEG] [--alpha DEG] | --list |
-    --levels (the level names, one a line: Allrun's -level checks)"""
+    """meshGen.py <level> [-o DIR] [-phi DEG] [-alpha DEG] | -list |
+    -levels (the level names, one a line: Allrun's -level checks)"""
     ap = argparse.ArgumentParser(description=doc.split("\n\n")[0])
     ap.add_argument("level", nargs="?", choices=list(levels))
-    ap.add_argument("-o", "--output", default="mesh",
+    ap.add_argument("-o", dest="output", default="mesh",
                     help="output folder (default: mesh)")
-    ap.add_argument("--phi", type=float, default=0.0,
+    ap.add_argument("-phi", type=float, default=0.0,
                     help="initial flapping angle of the wing [deg]")
-    ap.add_argument("--alpha", type=float, default=0.0,
+    ap.add_argument("-alpha", type=float, default=0.0,
                     help="initial pitching angle of the wing [deg]")
-    ap.add_argument("--list", action="store_true",
+    ap.add_argument("-list", action="store_true",
                     help="print the planned cell counts of every level")
-    ap.add_argument("--levels", action="store_true",
+    ap.add_argument("-levels", action="store_true",
                     help="print the level names, one a line, and stop")
     args = ap.parse_args(argv)
     if args.levels:

@@ -7,7 +7,7 @@ run against a reference run on the same mesh (the paper's settings: PISO,
 4 correctors, max Co 1, p to 1e-7), over the first whole flapping cycle(s)
 both runs completed.
 
-    python3 -m flapfoam.pimple_guard REF CASE [--cycles N]
+    python3 -m flapfoam.pimple_guard REF CASE [-cycles N]
 
 Per run (its flight data, log.overPimpleDyMFoam, step_timers.dat):
   - C_xI, C_zI: the wing's force coefficients (plotSingleWing), their mean
@@ -236,7 +236,7 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[1])
     ap.add_argument("ref", help="the reference run (paper settings)")
     ap.add_argument("case", help="the run to check")
-    ap.add_argument("--cycles", type=float, default=1,
+    ap.add_argument("-cycles", type=float, default=1,
                     help="whole cycles from the start (default 1)")
     args = ap.parse_args(argv)
     ref = read_run(args.ref, args.cycles)

@@ -7,9 +7,9 @@ setting, what a simulated flapping cycle cost and how far its flight is
 from the paper's settings on the same mesh (the accuracy guard,
 flapfoam.pimple_guard).
 
-    python3 -m flapfoam.pimple_study DIR [--cycles N] [--reference NAME]
+    python3 -m flapfoam.pimple_study DIR [-cycles N] [-reference NAME]
                                     [-o OUT.md]
-    python3 -m flapfoam.pimple_study DIR --steps K --settings NAME...
+    python3 -m flapfoam.pimple_study DIR -steps K -settings NAME...
                                     [-o OUT.md]
 
 DIR holds the runs <level>-np<N>-<setting> (bench/pimple/run) and, for
@@ -20,11 +20,11 @@ cost ratio to the reference setting (default paper) of its level and
 ranks, pressure iterations a step, and the guard: each criterion's
 measured share of what it allows (100 % at the limit) and PASS/FAIL.
 
-With --steps K: the fixed-step runs <level>-np<N>-<setting>-r<round> of
+With -steps K: the fixed-step runs <level>-np<N>-<setting>-r<round> of
 bench/pimple/run -steps instead: per run the median per step of every
 step-timer column after K start-up steps, then the median over the rounds;
 the table gives the step, pimple and its split (step_timers.pimple_split)
-per level, ranks and setting (in the order of --settings), and the step's
+per level, ranks and setting (in the order of -settings), and the step's
 and pimple's ratio of the first setting's to this one's.
 """
 
@@ -192,15 +192,15 @@ def fmt(values, key, form="%.4f"):
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[1])
     ap.add_argument("dir", help="the study's folder (bench/pimple/run -dir)")
-    ap.add_argument("--cycles", type=float, default=1,
+    ap.add_argument("-cycles", type=float, default=1,
                     help="whole cycles from the start (default 1)")
-    ap.add_argument("--reference", default="paper",
+    ap.add_argument("-reference", default="paper",
                     help="the setting the others are guarded against")
     ap.add_argument("-o", dest="out", help="write the table here too")
-    ap.add_argument("--steps", type=int, metavar="K",
+    ap.add_argument("-steps", type=int, metavar="K",
                     help="the fixed-step runs' table, K start-up steps")
-    ap.add_argument("--settings", nargs="+", default=[],
-                    help="with --steps: the settings, in the table's order")
+    ap.add_argument("-settings", nargs="+", default=[],
+                    help="with -steps: the settings, in the table's order")
     args = ap.parse_args(argv)
     if args.steps is not None:
         medians, rounds = step_medians(args.dir, args.steps)

@@ -130,7 +130,7 @@ def prescribedJoints(r, out):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[1])
     ap.add_argument("-case", default=".")
-    ap.add_argument("-o", "--output", default=None)
+    ap.add_argument("-o", dest="output", default=None)
     a = ap.parse_args()
     out = a.output or os.path.join(a.case, "plots")
     os.makedirs(out, exist_ok=True)

@@ -4,7 +4,7 @@
 """
 Plots of a single-wing drone run (Allrun calls it at the end of a run).
 
-    scripts/plotRun.py [-case DIR] [-o OUTDIR] [--dict FILE]
+    scripts/plotRun.py [-case DIR] [-o OUTDIR] [-dict FILE]
 
 Reads the run's flight data, postProcessing/flightData/<start>/flightData.h5
 (scripts/flightData.py; restarts append to it), or, for runs without it,
@@ -220,10 +220,10 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[1],
                                  formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("-case", default=".", help="case directory")
-    ap.add_argument("-o", "--output", default=None,
+    ap.add_argument("-o", dest="output", default=None,
                     help="output directory (default CASE/plots; a relative "
                          "path is relative to the working directory)")
-    ap.add_argument("--dict", default=None,
+    ap.add_argument("-dict", default=None,
                     help="multibody dictionary (default "
                          "CASE/constant/dynamicMeshDict)")
     args = ap.parse_args()

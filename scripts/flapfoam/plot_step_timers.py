@@ -11,19 +11,19 @@ for stepTimers.dat files; the files found under one directory (one per
 start time, i.e. restarts) are joined in time order.  Each INPUT gives one
 stacked bar: the mean per step of rbd, overset and pimple (the profiling bar
 chart of the paper), with "other" (total - rbd - overset - pimple) on top.
-With --fine the overset bar is split into its overset* parts.
+With -fine the overset bar is split into its overset* parts.
 
 Prints per input: the number of steps, the mean and median per step of
 every column and its share of total, and the closure check: the largest
 |rbd + overset + pimple - total|/total over the steps.
 
 Options:
-    -o, --output PNG      the chart (default stepTimers.png)
-    -n, --nStartup N      rows skipped at the start of each file (default 2,
+    -o PNG                the chart (default stepTimers.png)
+    -n, -nStartup N      rows skipped at the start of each file (default 2,
                           as the function object's summary)
-    -l, --label TEXT      bar label, once per INPUT (default: the path)
-    --fine                split overset into its parts
-    --title TEXT          chart title
+    -l TEXT               bar label, once per INPUT (default: the path)
+    -fine                split overset into its parts
+    -title TEXT          chart title
 
 Exits non-zero if an input holds no steps after the start-up rows.
 
@@ -94,18 +94,18 @@ def main():
         description=__doc__.split("\n")[0],
         formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("inputs", nargs="+", metavar="INPUT")
-    parser.add_argument("-o", "--output", default="stepTimers.png")
-    parser.add_argument("-n", "--nStartup", type=int, default=2)
-    parser.add_argument("-l", "--label", action="append")
-    parser.add_argument("--fine", action="store_true")
-    parser.add_argument("--title")
+    parser.add_argument("-o", dest="output", default="stepTimers.png")
+    parser.add_argument("-n", "-nStartup", type=int, default=2)
+    parser.add_argument("-l", dest="label", action="append")
+    parser.add_argument("-fine", action="store_true")
+    parser.add_argument("-title")
     args = parser.parse_args()
 
     if args.nStartup < 0:
-        parser.error("--nStartup must be >= 0")
+        parser.error("-nStartup must be >= 0")
     labels = args.label or []
     if labels and len(labels) != len(args.inputs):
-        parser.error("give --label once per INPUT")
+        parser.error("give -l once per INPUT")
     labels = labels or [os.path.normpath(p) for p in args.inputs]
 
     means = []

@@ -18,10 +18,10 @@ which prints "PASS text" or "FAIL text" and exits 0 or 1.  CHECK:
                                prescribed) = flapfoam.chain_reference's
     authors-controller CASE    the first controller update of a converted
                                authors' dictionary = their PD law
-    qs-entry ENTRY [--log LOG] [--tol T]
+    qs-entry ENTRY [-log LOG] [-tol T]
                                the fitted CL, CD0, CD1 = 1.7, 0.25, 2.3 (the
-                               synthetic wing's); with --log R^2 = 1
-    qs-reference REF JOINTS [--tol T]
+                               synthetic wing's); with -log R^2 = 1
+    qs-reference REF JOINTS [-tol T]
                                joints.dat's x, z = the quasiSteady reference
     finite-rows FILE N         a table of N rows, every value finite
     sweep-table CSV            bench/quasiSteady's 2 x 2 sweep: finite, more
@@ -304,12 +304,12 @@ def parser():
     sub.add_parser("authors-controller").add_argument("case")
     s = sub.add_parser("qs-entry")
     s.add_argument("entry")
-    s.add_argument("--log")
-    s.add_argument("--tol", type=float, default=1e-6)
+    s.add_argument("-log")
+    s.add_argument("-tol", type=float, default=1e-6)
     s = sub.add_parser("qs-reference")
     s.add_argument("reference")
     s.add_argument("joints")
-    s.add_argument("--tol", type=float, default=1e-3)
+    s.add_argument("-tol", type=float, default=1e-3)
     s = sub.add_parser("finite-rows")
     s.add_argument("file")
     s.add_argument("rows", type=int)

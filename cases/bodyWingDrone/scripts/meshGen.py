@@ -15,7 +15,7 @@ meshes that scripts/makeMesh turns into the overset mesh:
   <out>/body/system/blockMeshDict         body component (cellZone "body"):
                                           the cube shell of sphereMesh.py,
                                           mapped onto the spheres after
-                                          blockMesh (sphereMesh.py --map)
+                                          blockMesh (sphereMesh.py -map)
   <out>/background/system/blockMeshDict   background cube (cellZone
                                           "background") of 20 chords
   <out>/background/system/topoSetDict.refine<i>  refinement regions: the
@@ -27,8 +27,8 @@ meshes that scripts/makeMesh turns into the overset mesh:
   <out>/meshGen.json                      parameters and planned sizes
 
 Usage:
-  mesh_gen.py <level> [-o DIR] [--phi DEG] [--alpha DEG]
-  mesh_gen.py --list
+  mesh_gen.py <level> [-o DIR] [-phi DEG] [-alpha DEG]
+  mesh_gen.py -list
 
 The wing's axes pass through the body centre (the origin), so the wing
 component is the single-wing drone's at the same pose.  Units: metres.
@@ -97,7 +97,7 @@ def main(argv=None):
 
     summary = dict(components=[dict(name="wing"),
                                dict(name="body",
-                                    post=["sphereMesh.py", "--map"]),
+                                    post=["sphereMesh.py", "-map"]),
                                dict(name="background")],
                    level=args.level, levelParameters=m.lev,
                    pose=dict(phiDeg=args.phi, alphaDeg=args.alpha),

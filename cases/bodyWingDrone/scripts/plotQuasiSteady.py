@@ -104,7 +104,7 @@ def main():
     ap.add_argument("-cycles", type=int, default=20)
     ap.add_argument("-dir", default=os.path.join(CASE, "runs",
                                                  "quasiSteadyPaper"))
-    ap.add_argument("-o", "--output", default=None)
+    ap.add_argument("-o", dest="output", default=None)
     ap.add_argument("-noRun", action="store_true")
     a = ap.parse_args()
     if a.cycles < 1:

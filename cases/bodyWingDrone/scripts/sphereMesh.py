@@ -7,16 +7,16 @@ Body-wing drone: the body's component mesh, a spherical shell around the
 sphere of radius one chord (cellZone "body").
 
     sphereMesh.py <level> [-o FILE]         the blockMeshDict
-    sphereMesh.py --map POINTS [--centre X Y Z]
+    sphereMesh.py -map POINTS [-centre X Y Z]
                                             map blockMesh's points onto
                                             the spheres (ascii points file)
-    sphereMesh.py --list
+    sphereMesh.py -list
 
 Six blocks of a cubed sphere between the body surface (radius R1 = cbar,
 patch "body", wall) and the overset boundary (radius R2 = R1 + margin, patch
 "oversetPatch", overset).  blockMesh makes the shell between the cubes of
 half side 1 and 2 (n x n cells on each face, nR along the rays from the
-origin, graded geometrically from the wall spacing dsW); --map moves each
+origin, graded geometrically from the wall spacing dsW); -map moves each
 point along its ray to the radius R1 + (rho - 1)(R2 - R1), rho its max-norm
 (a gnomonic cubed sphere: the faces lie exactly on the spheres).  blockMesh's
 own projection onto spheres is not used: with a hollow shell its interior
@@ -98,7 +98,7 @@ def blockMeshDict(level):
            "object blockMeshDict; }",
            "// Body-wing drone: body component, level %s: n %d, nR %d, "
            "dsW %g m (R1 %g m, R2 %g m); the cube shell |x|_max in [1, 2] "
-           "is mapped onto the spherical shell by sphereMesh.py --map"
+           "is mapped onto the spherical shell by sphereMesh.py -map"
            % (level, n, nR, dsW, R1, R2),
            "scale 1;",
            "vertices", "("]
@@ -183,11 +183,11 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[1])
     ap.add_argument("level", nargs="?")
     ap.add_argument("-o", default=None)
-    ap.add_argument("--centre", nargs=3, type=float, default=[0.0, 0.0, 0.0])
-    ap.add_argument("--map", metavar="POINTS",
+    ap.add_argument("-centre", nargs=3, type=float, default=[0.0, 0.0, 0.0])
+    ap.add_argument("-map", metavar="POINTS",
                     help="map the cube-shell points file (ascii) onto the "
                          "spheres instead")
-    ap.add_argument("--list", action="store_true")
+    ap.add_argument("-list", action="store_true")
     a = ap.parse_args()
     if a.map:
         n = mapPoints(a.map, tuple(a.centre))

@@ -19,8 +19,8 @@ meshes that scripts/makeMesh turns into the overset mesh:
                                           area
 
 Usage:
-  mesh_gen.py <level> [-o DIR] [--phi DEG] [--alpha DEG]
-  mesh_gen.py --list
+  mesh_gen.py <level> [-o DIR] [-phi DEG] [-alpha DEG]
+  mesh_gen.py -list
 
 Wing component ("box around a thin box", O-type): the plate |z| <= t/2 with
 the semi-elliptical planform is the hole of a block-structured mesh whose
