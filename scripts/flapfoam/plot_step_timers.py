@@ -33,15 +33,24 @@ Uses Debian's python (/usr/bin/python3) with numpy and matplotlib.
 import argparse
 import os
 import sys
+from dataclasses import dataclass
 
 import numpy as np
 
 from flapfoam.step_timers import GROUPS, read_input, summary
 
 
+@dataclass
+class Chart:
+    """Where the chart goes and what it shows: the PNG, its title (None: the
+    default), the overset part's own parts (fine)."""
+    output: str = "stepTimers.png"
+    title: str = None
+    fine: bool = False
+
+
 def plot(labels, means, columns_list, args):
-    """The stacked bars of the step's parts; args: fine (the overset
-    part's own parts), output, title."""
+    """The stacked bars of the step's parts (args: a Chart)."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -89,6 +98,25 @@ def plot(labels, means, columns_list, args):
     print("plotStepTimers: wrote " + args.output)
 
 
+def chart(inputs, labels, n_startup, out):
+    """The chart (out: a Chart) of the runs' step timers (inputs: a
+    postProcessing/stepTimers folder or a stepTimers.dat each, labels one
+    each) after n_startup start-up steps; ValueError if one has no steps."""
+    means = []
+    columns_list = []
+    for label, path in zip(labels, inputs):
+        columns, data = read_input(path, n_startup)
+        missing = [c for c in ["time"] + GROUPS if c not in columns]
+        if len(data) == 0 or missing:
+            raise ValueError("%s: no steps after %d start-up rows%s"
+                             % (path, n_startup,
+                                (", missing " + " ".join(missing))
+                                if columns else ""))
+        means.append(summary(label, columns, data))
+        columns_list.append(columns)
+    plot(labels, means, columns_list, out)
+
+
 def main():
     parser = argparse.ArgumentParser(
         description=__doc__.split("\n")[0],
@@ -108,21 +136,11 @@ def main():
         parser.error("give -l once per INPUT")
     labels = labels or [os.path.normpath(p) for p in args.inputs]
 
-    means = []
-    columns_list = []
-    for label, path in zip(labels, args.inputs):
-        columns, data = read_input(path, args.nStartup)
-        missing = [c for c in ["time"] + GROUPS if c not in columns]
-        if len(data) == 0 or missing:
-            sys.exit("plotStepTimers: %s: no steps after %d start-up rows%s"
-                     % (path, args.nStartup,
-                        (", missing " + " ".join(missing)) if columns
-                        else ""))
-        means.append(summary(label, columns, data))
-        columns_list.append(columns)
-
-    plot(labels, means, columns_list, args)
-
+    try:
+        chart(args.inputs, labels, args.nStartup,
+              Chart(args.output, args.title, args.fine))
+    except ValueError as e:
+        sys.exit("plotStepTimers: %s" % e)
 
 if __name__ == "__main__":
     main()

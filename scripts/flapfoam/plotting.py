@@ -5,12 +5,10 @@
 What the plots of the cases share: matplotlib with the Agg backend (only
 plot modules import this one), saving a figure, an x-z path, the axes of a
 plot over the cycles, the shaded downstrokes and the step-timer chart of a
-run (scripts/plotStepTimers.py).
+run (flapfoam.plot_step_timers).
 """
 
 import os
-import subprocess
-import sys
 
 import numpy as np
 
@@ -18,11 +16,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402,F401  (the plot modules' plt)
 
+from flapfoam import plot_step_timers  # noqa: E402
 from flapfoam.step_timers import read_input  # noqa: E402
-
-PLOT_STEP_TIMERS = os.path.join(
-    os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
-    "plotStepTimers.py")
 
 
 def save(fig, out, name):
@@ -72,8 +67,8 @@ def shadeDownstrokes(ax, t, qDot):
 
 
 def stepTimers(case, out, label):
-    """stepTimers.png of the run's postProcessing/stepTimers (if any) by
-    scripts/plotStepTimers.py; its exit status."""
+    """stepTimers.png of the run's postProcessing/stepTimers (if any), the
+    chart of flapfoam.plot_step_timers; 0, or 1 if it has no steps."""
     timers = os.path.join(case, "postProcessing", "stepTimers")
     if not os.path.isdir(timers):
         return 0
@@ -81,6 +76,10 @@ def stepTimers(case, out, label):
         print("plotRun: no step-timer plot: no step after the 2 start-up"
               " steps")
         return 0
-    return subprocess.call([sys.executable, PLOT_STEP_TIMERS, timers, "-o",
-                            os.path.join(out, "stepTimers.png"), "-l",
-                            label])
+    try:
+        plot_step_timers.chart([timers], [label], 2, plot_step_timers.Chart(
+            os.path.join(out, "stepTimers.png")))
+    except ValueError as e:
+        print("plotStepTimers: %s" % e)
+        return 1
+    return 0

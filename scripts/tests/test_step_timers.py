@@ -69,3 +69,19 @@ def test_pimple_split_adds_up():
     assert step_timers.pimple_split({"pimple": 1.0}) is None
     assert step_timers.is_count("pIterations3")
     assert not step_timers.is_count("pimplePressure")
+
+
+def test_chart_of_a_run_and_of_one_without_steps(tmp_path):
+    from flapfoam import plot_step_timers, plotting
+    timers = tmp_path / "run" / "postProcessing" / "stepTimers"
+    timers_file(timers / "0", [(t, 0.1, 0.2, 1.0, 1.3) for t in range(1, 6)])
+    out = tmp_path / "plots"
+    out.mkdir()
+    assert plotting.stepTimers(str(tmp_path / "run"), str(out), "run") == 0
+    assert (out / "stepTimers.png").stat().st_size > 1000
+    # 2 rows: none after the 2 start-up steps
+    short = tmp_path / "short"
+    timers_file(short, [(1, 0.1, 0.2, 1.0, 1.3), (2, 0.1, 0.2, 1.0, 1.3)])
+    with pytest.raises(ValueError, match="no steps after 2 start-up rows"):
+        plot_step_timers.chart([str(short)], ["short"], 2,
+                               plot_step_timers.Chart(str(tmp_path / "s.png")))
