@@ -43,6 +43,7 @@ import os
 import re
 import sys
 import time
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -155,110 +156,161 @@ def tables(case):
     return jcols, np.hstack(jdata), bcols, np.hstack(bdata)
 
 
-def check(a):
+@dataclass
+class FileChecks:
+    """What check() asserts of a run's file besides its shape and NaNs:
+    the rows (None: any), the attributes' values (KEY: VALUE), a killed
+    run's log whose completed steps must have rows, a variable time step,
+    datasets' columns exactly zero or moving ("DATASET:i,j" each)."""
+    rows: int = None
+    attrs: dict = field(default_factory=dict)
+    log: str = None
+    variable_step: bool = False
+    zero: list = field(default_factory=list)
+    moving: list = field(default_factory=list)
+
+
+@dataclass
+class Tolerances:
+    """compare()'s tolerances (relative per column, time in seconds) and
+    datasets: the given ones (None: all but the excluded)."""
+    tol: float = 0.0
+    time_tol: float = 0.0
+    datasets: list = None
+    exclude: set = field(default_factory=lambda: {"timers"})
+
+
+def _check_times(name, t, variable_step):
+    dt = np.diff(t)
+    ok = len(t) > 1 and np.all(dt > 0)
+    if ok and not variable_step:
+        ok = np.max(np.abs(dt - dt[0])) <= 1e-9*abs(dt[0])
+    return report(ok, "flightData %s: time strictly increasing%s, %g to %g"
+                  % (name, "" if variable_step else " with a uniform step",
+                     t[0], t[-1]))
+
+
+def _check_attrs(name, attrs, given):
+    wanted = {"case": None, "level": None, "stencil": None, "nRanks": None,
+              "decomposition": None, "commit": None}
+    wanted.update(given)
+    wrong = [k for k, v in wanted.items()
+             if k not in attrs or (v is not None and attrs[k] != v)]
+    return report(not wrong, "flightData %s: attributes %s%s"
+                  % (name, ", ".join("%s=%s" % (k, attrs.get(k))
+                                     for k in sorted(wanted)),
+                     (" (wrong: %s)" % ", ".join(wrong)) if wrong else ""))
+
+
+def _check_columns(name, data, spec, zero):
+    """A dataset's columns ("DATASET:i,j") exactly 0 in every row (zero),
+    else not 0 in the last row."""
+    d, cols = spec.split(":")
+    cols = [int(c) for c in cols.split(",")]
+    v = np.asarray(data.get(d, np.zeros((0, 0))), dtype=float)
+    if v.ndim != 2 or v.shape[1] <= max(cols):
+        return report(False, "flightData %s: no columns %s of %s"
+                      % (name, cols, d))
+    if zero:
+        worst = float(np.max(np.abs(v[:, cols])))
+        return report(worst == 0.0, "flightData %s: %s columns %s exactly 0"
+                      " in every row (max |value| %g)"
+                      % (name, d, cols, worst))
+    last = v[-1, cols]
+    return report(bool(np.all(last != 0.0)), "flightData %s: %s columns %s"
+                  " moving (last row %s)" % (name, d, cols, " ".join(
+                      "%.3g" % x for x in last)))
+
+
+def _check_log(name, t, log):
+    """Steps the log started; each but the last was completed, and the
+    function object wrote its row before the next "Time =" line."""
+    started = [float(x) for x in re.findall(r"^Time = (\S+)$",
+                                            open(log).read(), re.MULTILINE)]
+    completed = started[:-1]
+    missing = [x for x in completed
+               if not np.any(np.abs(t - x) <= 1e-9*max(abs(x), 1e-300))]
+    return report(not missing and len(completed) > 0,
+                  "flightData %s: all %d steps the killed run's log "
+                  "completed have their rows (file: %d rows to t = %g)%s"
+                  % (name, len(completed), len(t), t[-1],
+                     (" missing %s" % missing[:5]) if missing else ""))
+
+
+def check(case, want):
+    """The PASS/FAIL lines of a run's file (want: a FileChecks); 1 if one
+    failed, else 0."""
     try:
-        attrs, data = load(a.case)
+        attrs, data = load(case)
     except (OSError, FileNotFoundError) as e:
-        return report(False, "flightData %s: cannot read: %s" % (a.case, e))
-    status = 0
-    name = os.path.basename(os.path.normpath(a.case))
+        return report(False, "flightData %s: cannot read: %s" % (case, e))
+    name = os.path.basename(os.path.normpath(case))
     t = data.get("time")
     if t is None:
         return report(False, "flightData %s: no time dataset" % name)
     n = len(t)
-
     rows = {k: len(v) for k, v in data.items()}
-    status |= report(all(r == n for r in rows.values()),
-                     "flightData %s: %d datasets, all with %d rows"
-                     % (name, len(rows), n))
-    if a.rows is not None:
-        status |= report(n == a.rows, "flightData %s: %d rows (expected %d)"
-                         % (name, n, a.rows))
-    dt = np.diff(t)
-    ok = n > 1 and np.all(dt > 0)
-    if ok and not a.variableStep:
-        ok = np.max(np.abs(dt - dt[0])) <= 1e-9*abs(dt[0])
-    status |= report(ok, "flightData %s: time strictly increasing%s, "
-                     "%g to %g" % (name, "" if a.variableStep else
-                                   " with a uniform step", t[0], t[-1]))
+    status = report(all(r == n for r in rows.values()),
+                    "flightData %s: %d datasets, all with %d rows"
+                    % (name, len(rows), n))
+    if want.rows is not None:
+        status |= report(n == want.rows, "flightData %s: %d rows (expected"
+                         " %d)" % (name, n, want.rows))
+    status |= _check_times(name, t, want.variable_step)
     bad = [k for k, v in data.items()
            if np.isnan(np.asarray(v, dtype=float)[1:]).any()]
     status |= report(not bad, "flightData %s: no NaN after the initial row%s"
                      % (name, (" (NaN in %s)" % ", ".join(bad)) if bad
                             else ""))
-    wanted = {"case": None, "level": None, "stencil": None, "nRanks": None,
-              "decomposition": None, "commit": None}
-    for kv in a.attr:
-        k, v = kv.split("=", 1)
-        wanted[k] = v
-    wrong = [k for k, v in wanted.items()
-             if k not in attrs or (v is not None and attrs[k] != v)]
-    status |= report(not wrong, "flightData %s: attributes %s%s"
-                     % (name, ", ".join("%s=%s" % (k, attrs.get(k))
-                                        for k in sorted(wanted)),
-                        (" (wrong: %s)" % ", ".join(wrong)) if wrong else ""))
-    for spec, zero in [(x, True) for x in a.zero] + \
-            [(x, False) for x in a.moving]:
-        d, cols = spec.split(":")
-        cols = [int(c) for c in cols.split(",")]
-        v = np.asarray(data.get(d, np.zeros((0, 0))), dtype=float)
-        if v.ndim != 2 or v.shape[1] <= max(cols):
-            status |= report(False, "flightData %s: no columns %s of %s"
-                             % (name, cols, d))
-            continue
-        if zero:
-            worst = float(np.max(np.abs(v[:, cols])))
-            status |= report(worst == 0.0, "flightData %s: %s columns %s "
-                             "exactly 0 in every row (max |value| %g)"
-                             % (name, d, cols, worst))
-        else:
-            last = v[-1, cols]
-            status |= report(bool(np.all(last != 0.0)), "flightData %s: %s "
-                             "columns %s moving (last row %s)"
-                             % (name, d, cols, " ".join("%.3g" % x
-                                                        for x in last)))
-    if a.log:
-        # Steps the log started; each but the last was completed, and the
-        # function object wrote its row before the next "Time =" line
-        started = [float(x) for x in
-                   re.findall(r"^Time = (\S+)$", open(a.log).read(),
-                              re.MULTILINE)]
-        completed = started[:-1]
-        missing = [x for x in completed
-                   if not np.any(np.abs(t - x) <= 1e-9*max(abs(x), 1e-300))]
-        status |= report(not missing and len(completed) > 0,
-                         "flightData %s: all %d steps the killed run's log "
-                         "completed have their rows (file: %d rows to t = "
-                         "%g)%s" % (name, len(completed), n, t[-1],
-                                    (" missing %s" % missing[:5])
-                                    if missing else ""))
+    status |= _check_attrs(name, attrs, want.attrs)
+    for spec in want.zero:
+        status |= _check_columns(name, data, spec, True)
+    for spec in want.moving:
+        status |= _check_columns(name, data, spec, False)
+    if want.log:
+        status |= _check_log(name, t, want.log)
     return status
 
 
-def compare(a):
+def _relative_difference(x, y):
+    """The largest |x - y| of a dataset per column over its column's
+    largest |x|, floored at 1e-9 of the dataset's largest value (a column
+    of round-off noise, e.g. y of a planar motion, is not compared to
+    itself); NaN in both is equal, in one infinitely different."""
+    x2 = x.reshape(len(x), -1)
+    y2 = y.reshape(len(y), -1)
+    both = np.isnan(x2) & np.isnan(y2)
+    big = np.nanmax(np.abs(x2)) if x2.size else 0.0
+    scale = np.maximum(np.nanmax(np.abs(x2), axis=0),
+                       max(1e-9*big, 1e-300))
+    diff = np.where(both, 0.0, np.abs(x2 - y2))/scale
+    if np.isnan(diff).any():
+        return float("inf")
+    return float(np.nanmax(diff)) if diff.size else 0.0
+
+
+def compare(ref_case, case, tols):
+    """The PASS/FAIL lines of a run's file against a reference run's
+    (tols: a Tolerances); 1 if one failed, else 0."""
     try:
-        _, A = load(a.ref)
-        _, B = load(a.case)
+        _, A = load(ref_case)
+        _, B = load(case)
     except (OSError, FileNotFoundError) as e:
         return report(False, "flightData compare: cannot read: %s" % e)
-    status = 0
-    ref = os.path.basename(os.path.normpath(a.ref))
-    name = os.path.basename(os.path.normpath(a.case))
-    exclude = set(a.exclude.split(",")) if a.exclude else set()
-    names = sorted(set(A) - exclude)
-    if a.datasets:
-        names = [d for d in a.datasets.split(",")]
-    status |= report(set(A) == set(B), "flightData %s vs %s: the same %d "
-                     "datasets" % (name, ref, len(A)))
+    ref = os.path.basename(os.path.normpath(ref_case))
+    name = os.path.basename(os.path.normpath(case))
+    names = tols.datasets or sorted(set(A) - tols.exclude)
+    status = report(set(A) == set(B), "flightData %s vs %s: the same %d "
+                    "datasets" % (name, ref, len(A)))
     if len(A["time"]) != len(B["time"]) or \
-            np.any(np.abs(A["time"] - B["time"]) > a.timeTol):
+            np.any(np.abs(A["time"] - B["time"]) > tols.time_tol):
         return report(False, "flightData %s vs %s: times differ (%d and %d "
                       "rows, tol %g s)" % (name, ref, len(A["time"]),
-                                           len(B["time"]), a.timeTol))
+                                           len(B["time"]), tols.time_tol))
     status |= report(True, "flightData %s vs %s: the same %d rows, times "
                      "equal%s" % (name, ref, len(A["time"]),
-                                  " to %g s" % a.timeTol if a.timeTol
-                                  else ""))
+                                  " to %g s" % tols.time_tol
+                                  if tols.time_tol else ""))
     worst = 0.0
     lines = []
     for d in names:
@@ -270,28 +322,16 @@ def compare(a):
             status |= report(False, "flightData %s vs %s: %s shapes %s and "
                              "%s" % (name, ref, d, x.shape, y.shape))
             continue
-        x2 = x.reshape(len(x), -1)
-        y2 = y.reshape(len(y), -1)
-        both = np.isnan(x2) & np.isnan(y2)
-        # Per column, floored at 1e-9 of the dataset's largest value (a
-        # column of round-off noise, e.g. y of a planar motion, is not
-        # compared to itself)
-        big = np.nanmax(np.abs(x2)) if x2.size else 0.0
-        scale = np.maximum(np.nanmax(np.abs(x2), axis=0),
-                           max(1e-9*big, 1e-300))
-        diff = np.where(both, 0.0, np.abs(x2 - y2))/scale
-        e = float(np.nanmax(diff)) if diff.size else 0.0
-        if np.isnan(diff).any():
-            e = float("inf")
+        e = _relative_difference(x, y)
         worst = max(worst, e)
         lines.append("%s %.1e" % (d, e))
-    status |= report(worst <= a.tol, "flightData %s vs %s: max relative "
+    status |= report(worst <= tols.tol, "flightData %s vs %s: max relative "
                      "difference %.2e (tol %g; per dataset: %s)"
-                     % (name, ref, worst, a.tol, ", ".join(lines)))
+                     % (name, ref, worst, tols.tol, ", ".join(lines)))
     return status
 
 
-def main():
+def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     sub = ap.add_subparsers(dest="command", required=True)
     c = sub.add_parser("check")
@@ -309,8 +349,14 @@ def main():
     m.add_argument("-timeTol", type=float, default=0.0)
     m.add_argument("-datasets")
     m.add_argument("-exclude", default="timers")
-    a = ap.parse_args()
-    return check(a) if a.command == "check" else compare(a)
+    a = ap.parse_args(argv)
+    if a.command == "check":
+        return check(a.case, FileChecks(
+            a.rows, dict(kv.split("=", 1) for kv in a.attr), a.log,
+            a.variableStep, a.zero, a.moving))
+    return compare(a.ref, a.case, Tolerances(
+        a.tol, a.timeTol, a.datasets.split(",") if a.datasets else None,
+        set(a.exclude.split(",")) if a.exclude else set()))
 
 
 if __name__ == "__main__":
