@@ -63,6 +63,7 @@ import math
 import os
 import re
 import sys
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -106,8 +107,10 @@ def multibodyDict(case):
 
 # --------------------------------------------------------------------------
 
-def checkPrescribed(args):
-    imposed = imposedJoints(multibodyDict(args.case))
+def checkPrescribed(case, name, tol, tol_table):
+    """The prescribed joints against the analytic Wang motion (tol: the
+    state files', tol_table: joints.dat's)."""
+    imposed = imposedJoints(multibodyDict(case))
     if not imposed:
         return report(False, "prescribed", "no imposedMotion entries")
 
@@ -119,7 +122,7 @@ def checkPrescribed(args):
                 np.abs(qDdot - qDDa)/(ev.amplitude*w*w))
 
     # full-precision states
-    sts = states(args.case)
+    sts = states(case)
     eState = np.zeros(3)
     for s in sts:
         for qi, ev in imposed.items():
@@ -128,7 +131,7 @@ def checkPrescribed(args):
             eState = np.maximum(eState, [float(x) for x in e])
 
     # every row of joints.dat
-    cols, J = joints(args.case)
+    cols, J = joints(case)
     c = {n: i for i, n in enumerate(cols)}
     eTable = np.zeros(3)
     for qi, ev in imposed.items():
@@ -136,16 +139,16 @@ def checkPrescribed(args):
                    J[:, c["qDdot_%d" % qi]], ev)
         eTable = np.maximum(eTable, [float(x.max()) for x in e])
 
-    ok = len(sts) > 0 and eState.max() <= args.tol \
-        and eTable.max() <= args.tolTable
-    return report(ok, args.name or "prescribed",
+    ok = len(sts) > 0 and eState.max() <= tol \
+        and eTable.max() <= tol_table
+    return report(ok, name or "prescribed",
                   "joints %s: state files (17 digits, %d steps) max error "
                   "q %.2e qDot %.2e qDdot %.2e (tol %g); joints.dat (12 "
                   "digits, %d rows) q %.2e qDot %.2e qDdot %.2e (tol %g); "
                   "error = |sim - analytic|/(A omega^k)"
                   % ("/".join("q_%d" % q for q in sorted(imposed)), len(sts),
-                     eState[0], eState[1], eState[2], args.tol, len(J),
-                     eTable[0], eTable[1], eTable[2], args.tolTable))
+                     eState[0], eState[1], eState[2], tol, len(J),
+                     eTable[0], eTable[1], eTable[2], tol_table))
 
 
 SOLVE_PARTS = ("pimplePressureSolve", "pimpleMomentumSolve",
@@ -181,15 +184,17 @@ def pimple_parts(rows, ranks):
     return share, inside
 
 
-def checkTimers(args):
-    files = step_timers.find_files(os.path.join(args.case, "postProcessing",
-                                        "stepTimers"))
+def checkTimers(case, name, tol, n_startup):
+    """The step timers' closure (tol) and PIMPLE parts after n_startup
+    start-up steps of each file."""
+    files = step_timers.find_files(os.path.join(case, "postProcessing",
+                                                "stepTimers"))
     rows = []
     for f in files:
         r = step_timers.read_file(f)
-        rows.extend(r[args.nStartup:])
+        rows.extend(r[n_startup:])
     if not rows:
-        return report(False, args.name or "timers", "no steps after the "
+        return report(False, name or "timers", "no steps after the "
                       "start-up rows")
     total = np.array([r["total"] for r in rows])
     parts = np.array([r["rbd"] + r["overset"] + r["pimple"] for r in rows])
@@ -200,13 +205,13 @@ def checkTimers(args):
     ranks = [r for f in files for r in step_timers.read_ranks(
         os.path.join(os.path.dirname(f), "stepTimersRanks.dat"))]
     solves = pimple_parts(rows, ranks)
-    return report(closureMean <= args.tol and solves is not None
-                  and solves[1], args.name or "timers",
+    return report(closureMean <= tol and solves is not None
+                  and solves[1], name or "timers",
                   "%d steps: |1 - mean(rbd+overset+pimple)/mean(total)| = "
                   "%.2f %% (tol %g %%), per-step max %.2f %%; mean total "
                   "%.3g s/step, shares rbd %.2f %% overset %.1f %% pimple "
                   "%.1f %%; %s"
-                  % (len(rows), 100*closureMean, 100*args.tol,
+                  % (len(rows), 100*closureMean, 100*tol,
                      100*perStep.max(), total.mean(), 100*share["rbd"],
                      100*share["overset"], 100*share["pimple"],
                      "no pimple parts (solves, laps, pIterations1)"
@@ -232,16 +237,46 @@ def matchRows(A, B):
     return np.array(ia, dtype=int), np.array(ib, dtype=int)
 
 
-def checkCompare(args):
-    ca, A = joints(args.a)
-    cb, B = joints(args.b)
-    cols = args.columns.split(",") if args.columns else ca[1:]
+@dataclass
+class JointsComparison:
+    """What checkCompare compares: joints.dat's columns (None: all), the
+    relative tolerance, the rows ("last" or "all"), the last state files
+    too (state)."""
+    columns: list = None
+    tol: float = 1e-6
+    rows: str = "last"
+    state: bool = False
+
+
+def stateDifferences(a, b, ca, A):
+    """{column: relative difference} of the last rigidBodyMotionState of
+    runs a and b (17 digits; floors from a's joints.dat A, columns ca);
+    None if they have none at a common last time."""
+    sa, sb = states(a), states(b)
+    if not sa or not sb or abs(sa[-1]["t"] - sb[-1]["t"]) > \
+            1e-9*abs(sa[-1]["t"]):
+        return None
+    out = {}
+    for key, pre in (("q", "q_"), ("qDot", "qDot_"), ("qDdot", "qDdot_")):
+        for qi in range(len(sa[-1][key])):
+            col = "%s%d" % (pre, qi)
+            floor = 1e-3*np.abs(A[:, ca.index(col)]).max() + 1e-300
+            out[col] = float(relDiff(sa[-1][key][qi], sb[-1][key][qi],
+                                     floor))
+    return sa[-1]["t"], out
+
+
+def checkCompare(a, b, name, want):
+    """joints.dat of run a against run b (want: a JointsComparison)."""
+    ca, A = joints(a)
+    cb, B = joints(b)
+    cols = want.columns or ca[1:]
     ia, ib = matchRows(A, B)
     if len(ia) == 0:
-        return report(False, args.name or "compare", "no common times")
-    if args.rows == "last":
+        return report(False, name or "compare", "no common times")
+    if want.rows == "last":
         if A[ia[-1], 0] != A[-1, 0] or B[ib[-1], 0] != B[-1, 0]:
-            return report(False, args.name or "compare",
+            return report(False, name or "compare",
                           "last rows at different times (%g, %g)"
                           % (A[-1, 0], B[-1, 0]))
         ia, ib = ia[-1:], ib[-1:]
@@ -253,60 +288,57 @@ def checkCompare(args):
     text = ", ".join("%s %.1e" % (k, v) for k, v in worst.items())
     maxRel = max(worst.values())
 
-    if args.state:
-        sa, sb = states(args.a), states(args.b)
-        if not sa or not sb or abs(sa[-1]["t"] - sb[-1]["t"]) > \
-                1e-9*abs(sa[-1]["t"]):
-            return report(False, args.name or "compare",
+    if want.state:
+        last = stateDifferences(a, b, ca, A)
+        if last is None:
+            return report(False, name or "compare",
                           "no rigidBodyMotionState at a common last time")
-        sWorst = {}
-        for key, pre in (("q", "q_"), ("qDot", "qDot_"), ("qDdot", "qDdot_")):
-            for qi in range(len(sa[-1][key])):
-                col = "%s%d" % (pre, qi)
-                floor = 1e-3*np.abs(A[:, ca.index(col)]).max() + 1e-300
-                sWorst[col] = float(relDiff(sa[-1][key][qi], sb[-1][key][qi],
-                                            floor))
+        t, sWorst = last
         worstKey = max(sWorst, key=sWorst.get)
         text += "; state at t = %g (17 digits): max %.1e (%s), q %s" % (
-            sa[-1]["t"], sWorst[worstKey], worstKey,
-            " ".join("%.1e" % sWorst["q_%d" % qi]
-                     for qi in range(len(sa[-1]["q"]))))
+            t, sWorst[worstKey], worstKey,
+            " ".join("%.1e" % v for k, v in sWorst.items()
+                     if k.startswith("q_")))
         maxRel = max(maxRel, max(sWorst.values()))
 
-    return report(maxRel <= args.tol, args.name or "compare",
+    return report(maxRel <= want.tol, name or "compare",
                   "%s rows (%d): max relative difference %.2e (tol %g): %s"
-                  % (args.rows, len(ia), maxRel, args.tol, text))
+                  % (want.rows, len(ia), maxRel, want.tol, text))
 
 
-def checkInitial(args):
-    cols, J = joints(args.case)
+def checkInitial(case, name, q, qdot_sign, tol):
+    """The first row of joints.dat: q ("i:value,...") within tol, the signs
+    of qDot (qdot_sign "i:sign,...", or None)."""
+    cols, J = joints(case)
     c = {n: i for i, n in enumerate(cols)}
     ok = True
     parts = []
-    for item in args.q.split(","):
+    for item in q.split(","):
         qi, value = item.split(":")
         err = abs(J[0, c["q_" + qi]] - float(value))
-        ok = ok and err <= args.tol
+        ok = ok and err <= tol
         parts.append("q_%s %.12g (expected %s, |diff| %.1e)"
                      % (qi, J[0, c["q_" + qi]], value, err))
-    for item in (args.qDotSign.split(",") if args.qDotSign else []):
+    for item in (qdot_sign.split(",") if qdot_sign else []):
         qi, sign = item.split(":")
         v = J[0, c["qDot_" + qi]]
         ok = ok and v*float(sign) > 0
         parts.append("qDot_%s %.6g (sign %s)" % (qi, v, sign))
-    return report(ok, args.name or "initial", "t = %g: %s (tol %g)"
-                  % (J[0, 0], ", ".join(parts), args.tol))
+    return report(ok, name or "initial", "t = %g: %s (tol %g)"
+                  % (J[0, 0], ", ".join(parts), tol))
 
 
-def checkRbs(args):
-    ca, A = joints(args.a)
-    cb, B = joints(args.b, "rigidBodySimulate")
+def checkRbs(a, b, name, tol):
+    """Every row of run a's eABAMeshMotion joints.dat against run b's
+    rigidBodySimulate one (relative tol)."""
+    ca, A = joints(a)
+    cb, B = joints(b, "rigidBodySimulate")
     if ca != cb:
-        return report(False, args.name or "rbs", "columns differ: %s / %s"
+        return report(False, name or "rbs", "columns differ: %s / %s"
                       % (ca, cb))
     ia, ib = matchRows(A, B)
     if len(ia) != len(A) or len(ib) != len(B):
-        return report(False, args.name or "rbs",
+        return report(False, name or "rbs",
                       "rows do not align: %d eABAMeshMotion, %d "
                       "rigidBodySimulate, %d common" % (len(A), len(B),
                                                          len(ia)))
@@ -316,10 +348,10 @@ def checkRbs(args):
         r = float(relDiff(A[ia, i], B[ib, i], floor).max())
         if r > worst:
             worst, worstCol = r, col
-    return report(worst <= args.tol, args.name or "rbs",
+    return report(worst <= tol, name or "rbs",
                   "%d rows x %d columns: max relative difference %.2e (%s) "
                   "(tol %g; eABAMeshMotion writes 12 digits)"
-                  % (len(ia), len(ca) - 1, worst, worstCol, args.tol))
+                  % (len(ia), len(ca) - 1, worst, worstCol, tol))
 
 
 def dictLeaves(d, prefix=""):
@@ -345,31 +377,33 @@ def sameTokens(a, b):
     return True
 
 
-def checkDictionary(args):
-    given = dict(dictLeaves(readFoamDict(args.given)))
-    run = dict(dictLeaves(readFoamDict(args.run)))
-    changed = set(args.changed)
+def checkDictionary(run_file, given_file, name, changed):
+    """Every entry of the user's dictionary given_file holds the same value
+    in the run's copy run_file, but the changed keys (present there)."""
+    given = dict(dictLeaves(readFoamDict(given_file)))
+    run = dict(dictLeaves(readFoamDict(run_file)))
+    changed = set(changed)
     bad = [k for k in sorted(given) if k not in changed and k != "FoamFile/note"
            and not sameTokens(given[k], run.get(k, []))]
     missing = sorted(changed - set(run))
     nNumbers = sum(1 for k in given if k not in changed for t in given[k]
                    if re.match(r"^[-+]?[0-9.]+([eE][-+]?[0-9]+)?$", t))
     text = ("%s: %d entries of %s (%d numbers) as given%s"
-            % (args.run, len(given) - len(changed), args.given, nNumbers,
+            % (run_file, len(given) - len(changed), given_file, nNumbers,
                ", changed as asked: " + " ".join(sorted(changed))
                if changed else ""))
     if bad or missing:
         text = ("%s: differ from %s: %s%s" % (
-            args.run, args.given, "; ".join(
+            run_file, given_file, "; ".join(
                 "%s %s -> %s" % (k, " ".join(given[k]),
                                  " ".join(run.get(k, ["(none)"])))
                 for k in bad[:5]),
             "; changed keys missing: " + " ".join(missing) if missing
             else ""))
-    return report(not bad and not missing, args.name or "dictionary", text)
+    return report(not bad and not missing, name or "dictionary", text)
 
 
-def main():
+def main(argv=None):
     ap = argparse.ArgumentParser(
         description="Checks of single-wing drone runs (PASS/FAIL lines)")
     ap.add_argument("-name", default=None, help="name on the line")
@@ -379,13 +413,15 @@ def main():
     p.add_argument("case")
     p.add_argument("-tol", type=float, default=1e-12)
     p.add_argument("-tolTable", type=float, default=1e-11)
-    p.set_defaults(func=checkPrescribed)
+    p.set_defaults(func=lambda a: checkPrescribed(
+        a.case, a.name, a.tol, a.tolTable))
 
     p = sub.add_parser("timers")
     p.add_argument("case")
     p.add_argument("-tol", type=float, default=0.05)
     p.add_argument("-nStartup", type=int, default=2)
-    p.set_defaults(func=checkTimers)
+    p.set_defaults(func=lambda a: checkTimers(
+        a.case, a.name, a.tol, a.nStartup))
 
     p = sub.add_parser("compare")
     p.add_argument("a")
@@ -394,28 +430,33 @@ def main():
     p.add_argument("-tol", type=float, default=1e-6)
     p.add_argument("-rows", choices=("last", "all"), default="last")
     p.add_argument("-state", action="store_true")
-    p.set_defaults(func=checkCompare)
+    p.set_defaults(func=lambda a: checkCompare(
+        a.a, a.b, a.name, JointsComparison(
+            a.columns.split(",") if a.columns else None, a.tol, a.rows,
+            a.state)))
 
     p = sub.add_parser("initial")
     p.add_argument("case")
     p.add_argument("-q", required=True)
     p.add_argument("-qDotSign", default=None)
     p.add_argument("-tol", type=float, default=1e-12)
-    p.set_defaults(func=checkInitial)
+    p.set_defaults(func=lambda a: checkInitial(
+        a.case, a.name, a.q, a.qDotSign, a.tol))
 
     p = sub.add_parser("dictionary")
     p.add_argument("run")
     p.add_argument("given")
     p.add_argument("-changed", nargs="*", default=[])
-    p.set_defaults(func=checkDictionary)
+    p.set_defaults(func=lambda a: checkDictionary(
+        a.run, a.given, a.name, a.changed))
 
     p = sub.add_parser("rbs")
     p.add_argument("a")
     p.add_argument("b")
     p.add_argument("-tol", type=float, default=1e-10)
-    p.set_defaults(func=checkRbs)
+    p.set_defaults(func=lambda a: checkRbs(a.a, a.b, a.name, a.tol))
 
-    args = ap.parse_args()
+    args = ap.parse_args(argv)
     return args.func(args)
 
 
