@@ -16,7 +16,7 @@ non-zero on failure.
         k: |sim - analytic| / (A omega^k), A the amplitude, omega = 2 pi f.
 
     checkRun.py timers CASE [-tol 0.05] [-nStartup 2]
-        step_timers.dat (all start folders): closure of rbd + overset +
+        stepTimers.dat (all start folders): closure of rbd + overset +
         pimple against total, as 1 - mean(rbd + overset + pimple)/mean(total)
         over the steps after the first nStartup of each file (PASS if below
         tol), and the largest per-step |total - sum|/total (reported: on

@@ -3,7 +3,7 @@
 #     under the GNU General Public License v3 or later (COPYING).
 """
 The CFD run of a drone case against its quasi-steady run on the same tree
-(issue 13's verification): both runs' flight data (flight_data.h5).
+(issue 13's verification): both runs' flight data (flightData.h5).
 
     python3 -m flapfoam.compare_models CFD_CASE QS_CASE [-o DIR] [-body wing]
         [-md FILE]

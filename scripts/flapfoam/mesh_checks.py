@@ -61,7 +61,7 @@ import argparse
 import glob
 import json
 import os
-from types import SimpleNamespace
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -240,6 +240,21 @@ def writtenTimes(case):
     return times
 
 
+@dataclass
+class MeshAddressing:
+    """A polyMesh's faces (offsets offs and vertices verts), points as
+    generated (pts0), owner, neighbour and cell count, the wing patch's
+    points and the overset patch's cells."""
+    offs: object
+    verts: object
+    pts0: object
+    owner: object
+    neighbour: object
+    nCells: int
+    wingPoints: object
+    ovCells: object
+
+
 def meshAddressing(case):
     """Faces, cells and patches of the case's polyMesh, the points as
     generated, the wing patch's points and the overset patch's cells."""
@@ -259,9 +274,8 @@ def meshAddressing(case):
     wingPoints = np.unique(np.concatenate(
         [verts[offs[f]:offs[f + 1]] for f in wingFaces]))
     ovCells = np.unique(owner[o["startFace"]:o["startFace"] + o["nFaces"]])
-    return SimpleNamespace(offs=offs, verts=verts, pts0=pts0, owner=owner,
-                           neighbour=neighbour, nCells=nCells,
-                           wingPoints=wingPoints, ovCells=ovCells)
+    return MeshAddressing(offs, verts, pts0, owner, neighbour, nCells,
+                          wingPoints, ovCells)
 
 
 def holeClearance(x0, margin, h):

@@ -12,7 +12,7 @@ import json
 import math
 import os
 import sys
-from types import SimpleNamespace
+from dataclasses import dataclass
 
 from flapfoam.background_mesh import BACKGROUND, backgroundMesh, topoSetRefine
 from flapfoam.block_mesh import writeCase
@@ -50,6 +50,24 @@ def header(argv=None):
             % " ".join(sys.argv[1:] if argv is None else argv))
 
 
+@dataclass
+class LevelMeshes:
+    """A level's meshes: its parameters (lev), the component's (comp), the
+    wing component's block mesh and summary (wbm, winfo), the
+    background's (bbm, binfo)."""
+    lev: dict
+    comp: dict
+    wbm: object
+    winfo: dict
+    bbm: object
+    binfo: dict
+
+
+def pose(phi, alpha):
+    """The wing's pose [rad] of the command line's -phi, -alpha [deg]."""
+    return math.radians(phi), math.radians(alpha)
+
+
 def build(level, component, pose=(0.0, 0.0), tilts=(0.0,)):
     """The wing component (at the pose [rad]) and the background of a
     level, the background refined around the volume the component sweeps
@@ -60,14 +78,7 @@ def build(level, component, pose=(0.0, 0.0), tilts=(0.0,)):
     checkBlockSides(wbm)
     bbm, binfo = backgroundMesh(lev, BACKGROUND,
                                 sweptEnvelope(comp, BACKGROUND, tilts))
-    return SimpleNamespace(lev=lev, comp=comp, wbm=wbm, winfo=winfo,
-                           bbm=bbm, binfo=binfo)
-
-
-def buildPose(args, component, tilts=(0.0,)):
-    """build() at the level and pose [deg] of the command line."""
-    return build(args.level, component,
-                 (math.radians(args.phi), math.radians(args.alpha)), tilts)
+    return LevelMeshes(lev, comp, wbm, winfo, bbm, binfo)
 
 
 def writeWingAndBackground(out, hdr, drone, m, extraActions=None):

@@ -9,7 +9,7 @@ both runs completed.
 
     python3 -m flapfoam.pimple_guard REF CASE [-cycles N]
 
-Per run (its flight data, log.overPimpleDyMFoam, step_timers.dat):
+Per run (its flight data, log.overPimpleDyMFoam, stepTimers.dat):
   - C_xI, C_zI: the wing's force coefficients (plotSingleWing), their mean
     over the cycles (weighted by the step);
   - x = q_1, z = q_0 after the cycles (interpolated to the end time);

@@ -7,7 +7,7 @@ Plots of a body-wing drone run (Allrun calls it at the end of a run).
     scripts/plotRun.py [-case DIR] [-o OUTDIR]
 
 Reads the run's flight data (postProcessing/flightData/<start>/
-flight_data.h5, flapfoam.flight_data) and writes, in OUTDIR
+flightData.h5, flapfoam.flight_data) and writes, in OUTDIR
 (default DIR/plots):
 
   trajectory.png         x-z path of the body's centre of mass [mm];
@@ -32,7 +32,7 @@ Prints a summary.  Exit status non-zero if the data are missing.
 import argparse
 import os
 import sys
-from types import SimpleNamespace
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -43,6 +43,20 @@ from flapfoam.plotting import (cycleAxes, path, plt, save, shadeDownstrokes,
 from flapfoam.wang import wangJoints
 
 
+@dataclass
+class Run:
+    """A run's flight data (attrs, d: {dataset: array}), times t, joints'
+    q and qDot, prescribed joints (wang), flapping frequency f and t f."""
+    attrs: dict
+    d: dict
+    t: object
+    q: object
+    qDot: object
+    wang: dict
+    f: float
+    tf: object
+
+
 def readRun(case):
     """The run's flight data and Wang joints."""
     attrs, d = flight_data.load(case)
@@ -50,8 +64,7 @@ def readRun(case):
     wang = wangJoints(multibodyCoeffs(os.path.join(case, "constant",
                                                    "dynamicMeshDict")))
     f = wang[3].frequency if 3 in wang else 20.0
-    return SimpleNamespace(attrs=attrs, d=d, t=t, q=d["joints/q"],
-                           qDot=d["joints/qDot"], wang=wang, f=f, tf=f*t)
+    return Run(attrs, d, t, d["joints/q"], d["joints/qDot"], wang, f, f*t)
 
 
 def trajectory(r, out):

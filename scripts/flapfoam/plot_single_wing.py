@@ -53,7 +53,7 @@ import argparse
 import math
 import os
 import sys
-from types import SimpleNamespace
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -65,6 +65,46 @@ from flapfoam.tables import joinedTable, startFolders
 from flapfoam.wang import imposedJoints
 
 
+@dataclass
+class Reference:
+    """The prescribed joints ({index: motion}), rho, the flapping frequency
+    f, U_ref and q_ref (dynamic pressure times area)."""
+    joints: dict
+    rho: float
+    f: float
+    Uref: float
+    qref: float
+
+
+@dataclass
+class Run:
+    """A run's joints and bodies tables (J, B; column indices jc, bc), its
+    times t, where they come from (source) and its Reference (ref)."""
+    J: object
+    B: object
+    jc: dict
+    bc: dict
+    t: object
+    source: str
+    ref: Reference
+
+    @property
+    def joints(self):
+        return self.ref.joints
+
+    @property
+    def f(self):
+        return self.ref.f
+
+    @property
+    def Uref(self):
+        return self.ref.Uref
+
+    @property
+    def qref(self):
+        return self.ref.qref
+
+
 def referenceValues(coeffs):
     """The prescribed joints, f, U_ref and the dynamic pressure times area
     of the multibody coefficients (the module's docstring)."""
@@ -74,8 +114,8 @@ def referenceValues(coeffs):
     f = flap.frequency if flap else 20.0
     Aphi = flap.amplitude if flap else 75.0*math.pi/180.0
     Uref = 4.0*f*Aphi*geo.radiusOfGyration()
-    return SimpleNamespace(joints=joints, rho=rho, f=f, Uref=Uref,
-                           qref=0.5*rho*geo.planformArea()*Uref**2)
+    return Reference(joints, rho, f, Uref,
+                     0.5*rho*geo.planformArea()*Uref**2)
 
 
 def readRun(case, dictPath):
@@ -91,7 +131,7 @@ def readRun(case, dictPath):
         print("plotRun: reading %s" % flight_data.find(case))
     else:
         if not startFolders(base):
-            sys.exit("plotRun: no %s/<time>/joints.dat and no flight_data.h5"
+            sys.exit("plotRun: no %s/<time>/joints.dat and no flightData.h5"
                      % base)
         jcols, J = joinedTable(base, "joints.dat", keepEarlierAtStart=False)
         bcols, B = joinedTable(base, "bodies.dat", keepEarlierAtStart=True)
@@ -107,9 +147,7 @@ def readRun(case, dictPath):
           "quadrature %.6g), U_ref = 4 f A_phi R2 = %.6g m/s, rho = %g"
           % (geo.planformArea(), geo.radiusOfGyration(),
              geo.radiusOfGyrationQuadrature(), ref.Uref, ref.rho))
-    return SimpleNamespace(joints=ref.joints, J=J, B=B, jc=jc, bc=bc, t=t,
-                           f=ref.f, Uref=ref.Uref, qref=ref.qref,
-                           source=source)
+    return Run(J, B, jc, bc, t, source, ref)
 
 
 def trajectory(r, out):

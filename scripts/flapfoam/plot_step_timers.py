@@ -117,17 +117,18 @@ def chart(inputs, labels, n_startup, out):
     plot(labels, means, columns_list, out)
 
 
-def main():
+def main(argv=None):
     parser = argparse.ArgumentParser(
         description=__doc__.split("\n")[0],
         formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("inputs", nargs="+", metavar="INPUT")
     parser.add_argument("-o", dest="output", default="stepTimers.png")
-    parser.add_argument("-n", "-nStartup", type=int, default=2)
+    parser.add_argument("-n", "-nStartup", dest="nStartup", type=int,
+                        default=2)
     parser.add_argument("-l", dest="label", action="append")
     parser.add_argument("-fine", action="store_true")
     parser.add_argument("-title")
-    args = parser.parse_args()
+    args = parser.parse_args(argv)
 
     if args.nStartup < 0:
         parser.error("-nStartup must be >= 0")

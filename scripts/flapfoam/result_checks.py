@@ -36,8 +36,8 @@ which prints "PASS text" or "FAIL text" and exits 0 or 1.  CHECK:
                                cycles) against a finer step's (FINE)
     gain-sweep-table CSV       gainSweep's 2 x 2 table: 4 rows, status ok,
                                finite metrics
-    flight-data-times FILE     prints the time column of a flight_data.h5
-    half-row CASE              the run's flight_data.h5 made to end with a
+    flight-data-times FILE     prints the time column of a flightData.h5
+    half-row CASE              the run's flightData.h5 made to end with a
                                half-written row (every dataset but time one
                                row longer); prints the datasets changed and
                                the row counts the reader loads
@@ -244,14 +244,14 @@ def gain_sweep_table(path):
 
 
 def flight_data_times(path):
-    """The time column of a flight_data.h5, "%g" each."""
+    """The time column of a flightData.h5, "%g" each."""
     import h5py
     with h5py.File(path, "r") as f:
         return " ".join("%g" % t for t in f["time"][:])
 
 
 def half_row(case):
-    """CASE's flight_data.h5 made to end with a half-written row (every
+    """CASE's flightData.h5 made to end with a half-written row (every
     dataset but time one row longer, 999): "datasets row-counts-loaded"."""
     import h5py
     with h5py.File(flight_data.find(case), "r+") as f:
@@ -268,7 +268,7 @@ def half_row(case):
 
 
 def rows_summary(path):
-    """"times | sorted row counts, cells holding 999" of a flight_data.h5."""
+    """"times | sorted row counts, cells holding 999" of a flightData.h5."""
     import h5py
     rows, bad = set(), [0]
     with h5py.File(path, "r") as f:

@@ -1,7 +1,7 @@
 # License
 #     This file is part of flapFoam, derived from OpenFOAM: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""flapfoam.step_timers: the step_timers.dat reader, restarts, the pimple
+"""flapfoam.step_timers: the stepTimers.dat reader, restarts, the pimple
 split."""
 
 import pytest
@@ -85,3 +85,15 @@ def test_chart_of_a_run_and_of_one_without_steps(tmp_path):
     with pytest.raises(ValueError, match="no steps after 2 start-up rows"):
         plot_step_timers.chart([str(short)], ["short"], 2,
                                plot_step_timers.Chart(str(tmp_path / "s.png")))
+
+
+def test_chart_command_line(tmp_path):
+    from flapfoam import plot_step_timers
+    timers = tmp_path / "run"
+    timers_file(timers, [(t, 0.1, 0.2, 1.0, 1.3) for t in range(1, 6)])
+    out = tmp_path / "chart.png"
+    plot_step_timers.main([str(timers), "-o", str(out), "-nStartup", "1",
+                           "-l", "run", "-title", "a run"])
+    assert out.stat().st_size > 1000
+    with pytest.raises(SystemExit, match="no steps after 5 start-up rows"):
+        plot_step_timers.main([str(timers), "-n", "5", "-o", str(out)])

@@ -15,7 +15,7 @@ Usage: compareMotion.py REF CASE [-forceTol 0] [-qTol 0]
          components of |F_CASE - F_REF| / max|F_REF|
          (max of |F| over the rows of the reference run); PASS if <= forceTol,
          each component reported.
-  trajectory: check_run.py's relative difference |a - b| / max(|a|, |b|,
+  trajectory: checkRun.py's relative difference |a - b| / max(|a|, |b|,
          floor), floor = 1e-3 x max |value| of that column over REF's rows;
          PASS if <= qTol for each of the columns.
 One PASS/FAIL line per check; exit status 1 on a failure.
@@ -76,7 +76,7 @@ def main():
                ", ".join("F%s %.1e" % (c, r) for c, r in zip("xyz", rel)),
                scale))
 
-    # Trajectory (check_run.py's relative difference with a floor)
+    # Trajectory (checkRun.py's relative difference with a floor)
     ca, A = check_run.joints(a.ref)
     cb, B = check_run.joints(a.case)
     ia, ib = check_run.matchRows(A, B)

@@ -27,8 +27,8 @@ meshes that scripts/makeMesh turns into the overset mesh:
   <out>/meshGen.json                      parameters and planned sizes
 
 Usage:
-  mesh_gen.py <level> [-o DIR] [-phi DEG] [-alpha DEG]
-  mesh_gen.py -list
+  meshGen.py <level> [-o DIR] [-phi DEG] [-alpha DEG]
+  meshGen.py -list
 
 The wing's axes pass through the body centre (the origin), so the wing
 component is the single-wing drone's at the same pose.  Units: metres.
@@ -85,7 +85,8 @@ def main(argv=None):
                      1e3*m.binfo["h"]))
         return 0
 
-    m = mesh_gen.buildPose(args, COMPONENT, tilts)
+    m = mesh_gen.build(args.level, COMPONENT,
+                       mesh_gen.pose(args.phi, args.alpha), tilts)
     stext, sinfo = sphereMesh.blockMeshDict(args.level)
     hdr = mesh_gen.header(argv)
     mesh_gen.writeWingAndBackground(

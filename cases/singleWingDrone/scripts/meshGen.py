@@ -19,8 +19,8 @@ meshes that scripts/makeMesh turns into the overset mesh:
                                           area
 
 Usage:
-  mesh_gen.py <level> [-o DIR] [-phi DEG] [-alpha DEG]
-  mesh_gen.py -list
+  meshGen.py <level> [-o DIR] [-phi DEG] [-alpha DEG]
+  meshGen.py -list
 
 Wing component ("box around a thin box", O-type): the plate |z| <= t/2 with
 the semi-elliptical planform is the hole of a block-structured mesh whose
@@ -76,7 +76,8 @@ def main(argv=None):
                                  1e3*m.binfo["h"]))
         return 0
 
-    m = mesh_gen.buildPose(args, COMPONENT)
+    m = mesh_gen.build(args.level, COMPONENT,
+                       mesh_gen.pose(args.phi, args.alpha))
     mesh_gen.writeWingAndBackground(args.output, mesh_gen.header(argv),
                                    "Single-wing drone", m)
     # components in merge order (scripts/makeOversetMesh): the wing is the
