@@ -18,6 +18,7 @@ Writes a markdown table (differences in mm and in % of the reference's
 
 import argparse
 import os
+from dataclasses import dataclass
 
 from flapfoam.qs_sweep import Model, Sweep
 
@@ -25,12 +26,20 @@ INTEGRATORS = (("Newmark", 1), ("Newmark", 3), ("symplectic", 1),
                ("symplectic", 3))
 
 
-def flight(args, solver, nIter, steps):
+@dataclass
+class Study:
+    """The study's dictionary, working folder and cycles flown."""
+    dict: str
+    dir: str
+    cycles: int
+
+
+def flight(study, solver, nIter, steps):
     """(xEnd, zEnd, seconds, frequency) of one run."""
-    work = os.path.join(args.dir, "%s-%d-%d" % (solver, nIter, steps))
+    work = os.path.join(study.dir, "%s-%d-%d" % (solver, nIter, steps))
     os.makedirs(work, exist_ok=True)
-    model = Model(args.dict, work, solver, nIter)
-    row = Sweep(model, work, args.cycles, steps).run("run", {})
+    model = Model(study.dict, work, solver, nIter)
+    row = Sweep(model, work, study.cycles, steps).run("run", {})
     return row["xEnd"], row["zEnd"], row["seconds"], \
         model.defaults["frequency"]
 
@@ -45,7 +54,8 @@ def main():
     parser.add_argument("-o", required=True)
     args = parser.parse_args()
     steps = [int(s) for s in args.steps.split()]
-    xRef, zRef, _, _ = flight(args, "Newmark", 3, 4*max(steps))
+    study = Study(args.dict, args.dir, args.cycles)
+    xRef, zRef, _, _ = flight(study, "Newmark", 3, 4*max(steps))
     lines = [
         "| integrator | nIter | steps/cycle | x(T) [mm] | z(T) [mm] |"
         " x - Newmark 3 [mm] (%) | z - Newmark 3 [mm] (%) |"
@@ -53,7 +63,7 @@ def main():
         "|---|---|---|---|---|---|---|---|---|---|"]
     summary = []
     for n in steps:
-        runs = {(s, i): flight(args, s, i, n) for s, i in INTEGRATORS}
+        runs = {(s, i): flight(study, s, i, n) for s, i in INTEGRATORS}
         xN, zN, _, _ = runs[("Newmark", 3)]
         summary.append(
             "%d steps per cycle (deltaT %.3g s): the largest difference from"

@@ -25,6 +25,7 @@ import os
 import platform
 import re
 import time
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -213,34 +214,46 @@ def predictions(data):
     return out
 
 
-def load(args):
-    """Everything the tables and charts need."""
-    data = {"timeLevel": args.timeLevel, "costs": {}}
-    levels = sorted(set(args.levels.split()) | {args.countLevel,
-                                                args.timeLevel})
+@dataclass
+class Bench:
+    """Where the bench's runs are (dir) and which of them to read: the
+    levels tabulated, the level whose traffic was counted (over steps
+    countSteps), the level timed (its first startup steps left out)."""
+    dir: str
+    levels: list
+    countLevel: str = "tiny"
+    countSteps: tuple = (1, 3)
+    timeLevel: str = "coarse"
+    startup: int = 3
+
+
+def load(bench):
+    """Everything the tables and charts need (bench: a Bench)."""
+    data = {"timeLevel": bench.timeLevel, "costs": {}}
+    levels = sorted(set(bench.levels) | {bench.countLevel, bench.timeLevel})
     data["structure"] = {
-        lv: read_structure(os.path.join(args.dir, lv, "structure"),
-                           os.path.join(args.dir, lv, "base"))
+        lv: read_structure(os.path.join(bench.dir, lv, "structure"),
+                           os.path.join(bench.dir, lv, "base"))
         for lv in levels
-        if glob.glob(os.path.join(args.dir, lv, "structure", "*.report"))}
+        if glob.glob(os.path.join(bench.dir, lv, "structure", "*.report"))}
     data["traffic"] = {
-        lv: read_traffic(os.path.join(args.dir, lv, "traffic"),
-                         *args.countSteps)
+        lv: read_traffic(os.path.join(bench.dir, lv, "traffic"),
+                         *bench.countSteps)
         for lv in data["structure"]
-        if os.path.isdir(os.path.join(args.dir, lv, "traffic"))}
-    data["timed"] = {lv: read_timed(os.path.join(args.dir, lv, "timed"),
-                                    args.startup) for lv in levels}
-    data["machine"] = scaling_validate.read_ping_pong(os.path.join(args.dir, "pingPong.log"))
-    data["pimpleTraffic"] = pimple_traffics(data, args.countLevel)
+        if os.path.isdir(os.path.join(bench.dir, lv, "traffic"))}
+    data["timed"] = {lv: read_timed(os.path.join(bench.dir, lv, "timed"),
+                                    bench.startup) for lv in levels}
+    data["machine"] = scaling_validate.read_ping_pong(
+        os.path.join(bench.dir, "pingPong.log"))
+    data["pimpleTraffic"] = pimple_traffics(data, bench.countLevel)
     data["stencils"] = [s for s in STENCILS if any(
-        k[2] == s for k in data["traffic"][args.countLevel])]
+        k[2] == s for k in data["traffic"][bench.countLevel])]
     data["fits"] = {s: traffic_fit(data, s) for s in data["stencils"]}
     data["fixedOverset"] = {s: fixed_overset(data, s)
                             for s in data["stencils"]}
     data["model"] = predictions(data)
-    data["levels"] = [lv for lv in args.levels.split()
-                      if lv in data["structure"]]
-    data["countLevel"] = args.countLevel
+    data["levels"] = [lv for lv in bench.levels if lv in data["structure"]]
+    data["countLevel"] = bench.countLevel
     return data
 
 
@@ -255,7 +268,8 @@ def main():
     parser.add_argument("-o", default=os.path.join(
         os.path.dirname(os.path.abspath(__file__)), "results"))
     args = parser.parse_args()
-    data = load(args)
+    data = load(Bench(args.dir, args.levels.split(), args.countLevel,
+                      tuple(args.countSteps), args.timeLevel, args.startup))
     lines = report.tables(data)
     lines += ["", "Machine: %s, %d CPUs, load average %s; %s." % (
         platform.node(), os.cpu_count(),

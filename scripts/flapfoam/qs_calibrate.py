@@ -40,6 +40,7 @@ import copy
 import os
 import re
 import sys
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -222,9 +223,22 @@ def entryText(name, entry, values):
     return "\n".join(lines)
 
 
-def report(args, rows, name, entry, coeffs):
-    """Fit, print the report and the entry; returns the entry's text."""
-    components = ["xyz".index(c) for c in args.components]
+@dataclass
+class WingEntry:
+    """The aerodynamics entry fitted: its dictionary file, name, keys and
+    the multibody coefficients around it."""
+    path: str
+    name: str
+    entry: dict
+    coeffs: dict
+
+
+def report(wing, rows, axes):
+    """Fit the wing (a WingEntry) on the rows' force components axes ("xz"
+    or "xyz"), print the report and the entry; returns the entry's
+    text."""
+    entry, coeffs = wing.entry, wing.coeffs
+    components = ["xyz".index(c) for c in axes]
     basis = basisForces(Wing(entry), rows)
     fitted, cond = fit(basis, rows, components)
     defaults = Wing({k: v for k, v in entry.items() if k not in COEFFS})
@@ -236,7 +250,7 @@ def report(args, rows, name, entry, coeffs):
 
     print("qsCalibrate: %s, body %s, %d rows t = %g to %g s, components %s"
           % (rows.path, entry["body"][0], len(rows.time),
-             rows.time[0], rows.time[-1], " ".join(args.components)))
+             rows.time[0], rows.time[-1], " ".join(axes)))
     print("fitted: CL %.8g CD0 %.8g CD1 %.8g (condition number %.3g)"
           % (tuple(fitted) + (cond,)))
     negative = [k for k, x in zip(COEFFS, fitted) if x < 0]
@@ -249,13 +263,13 @@ def report(args, rows, name, entry, coeffs):
     for label, x in (("fitted", fitted), ("Wang's defaults", wang)):
         model = np.einsum("j,ijk->ik", x, basis)
         fitText = "; ".join("%s: R^2 %.6f, RMS residual %.3g of the range"
-                            % (args.components[i], r2, rms) for i, (r2, rms)
+                            % (axes[i], r2, rms) for i, (r2, rms)
                             in enumerate(quality(model, rows, components)))
         print("QS %s (CL %.4g CD0 %.4g CD1 %.4g): %s; mean F_z %.6g N ="
               " %.4f of the run's" % (label, *x, fitText, meanZ(model),
                                        meanZ(model)/meanZ(rows.force)))
-    text = entryText(name, entry, fitted)
-    print("The entry to paste (aerodynamics of %s):\n%s" % (args.dict, text))
+    text = entryText(wing.name, entry, fitted)
+    print("The entry to paste (aerodynamics of %s):\n%s" % (wing.path, text))
     return text
 
 
@@ -281,7 +295,8 @@ def main():
                                  ", ".join(coeffs.get("bodies", {}))))
     centre = vec(coeffs["bodies"][body].get("centreOfMass", ["0", "0", "0"]))
     rows = FlightRows(args.case, body, centre, args.skip)
-    text = report(args, rows, name, entry, coeffs)
+    text = report(WingEntry(args.dict, name, entry, coeffs), rows,
+                  args.components)
     if args.out:
         try:
             with open(args.out, "w") as f:
