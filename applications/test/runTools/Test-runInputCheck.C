@@ -20,7 +20,7 @@ License
     along with flapFoam (COPYING).  If not, see <http://www.gnu.org/licenses/>.
 
 Description
-    GoogleTest unit tests of the run-input checks of libflapFoamStepTimers
+    GoogleTest unit tests of libflapFoamRunTools: the run-input checks
     (runInputCheck, functionObjectKeys) and runProgress's durations:
       - read: a number of the whole text, beyond a double (1e400, -1e309)
         refused without SIGFPE, an integer that is not one refused;

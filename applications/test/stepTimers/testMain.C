@@ -23,9 +23,9 @@ Application
     flapFoamTest-stepTimers
 
 Description
-    GoogleTest unit tests of libflapFoamStepTimers, one file per class
-    (Test-<class>.C; runInputCheck, functionObjectKeys and runProgress's
-    durations in Test-runInputCheck.C).
+    GoogleTest unit tests of libflapFoamStepTimers (the timers registry and
+    its function object), in Test-stepTimers.C; the run tools' in
+    applications/test/runTools.
 
 \*---------------------------------------------------------------------------*/
 

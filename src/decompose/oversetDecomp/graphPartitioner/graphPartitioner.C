@@ -23,92 +23,19 @@ License
 
 #include "graphPartitioner.H"
 
-// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
-
-const Foam::Enum<Foam::graphPartitioner::library>
-Foam::graphPartitioner::libraryNames
-({
-    { library::metis, "metis" },
-    { library::scotch, "scotch" },
-});
-
-
-const Foam::wordList Foam::graphPartitioner::keys
-({
-    "partitioner", "imbalance", "oversetImbalance", "oversetWork",
-    "poseGroups"
-});
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::graphPartitioner::graphPartitioner(const dictionary& coeffs)
+Foam::graphPartitioner::graphPartitioner(const oversetGraphSettings& settings)
 :
-    library_
-    (
-        libraryNames.getOrDefault("partitioner", coeffs, library::metis)
-    ),
-    imbalance_
-    (
-        readInRange(coeffs, "imbalance", 0.02, scalarMinMax(1e-3, 1))
-    ),
-    oversetImbalance_
-    (
-        readInRange
-        (
-            coeffs, "oversetImbalance", 0.1, scalarMinMax(1e-3, 10)
-        )
-    ),
-    oversetWork_
-    (
-        readInRange(coeffs, "oversetWork", 1, scalarMinMax(0, 1000))
-    ),
-    poseGroups_
-    (
-        label(readInRange(coeffs, "poseGroups", -1, scalarMinMax(-1, 1000)))
-    )
-{
-    if (poseGroups_ != coeffs.getOrDefault<scalar>("poseGroups", -1))
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "poseGroups " << coeffs.get<scalar>("poseGroups")
-            << ": an integer in [-1, 1000] is allowed" << exit(FatalIOError);
-    }
-    if
-    (
-        coeffs.found("poseGroups") && poseGroups_
-     && library_ != library::metis
-    )
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "poseGroups " << poseGroups_ << " with partitioner "
-            << libraryNames[library_] << ": poseGroups is allowed with"
-            << " partitioner metis only (scotch balances one weight)"
-            << exit(FatalIOError);
-    }
-}
+    library_(settings.partitioner()),
+    imbalance_(settings.imbalance()),
+    oversetImbalance_(settings.oversetImbalance()),
+    oversetWork_(settings.oversetWork()),
+    poseGroups_(settings.poseGroups())
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::scalar Foam::graphPartitioner::readInRange
-(
-    const dictionary& dict,
-    const word& key,
-    const scalar deflt,
-    const scalarMinMax& range
-)
-{
-    const scalar value = dict.getOrDefault<scalar>(key, deflt);
-    if (!range.contains(value))
-    {
-        FatalIOErrorInFunction(dict)
-            << key << " " << value << ": a value in [" << range.min()
-            << ", " << range.max() << "] is allowed" << exit(FatalIOError);
-    }
-    return value;
-}
-
 
 Foam::labelList Foam::graphPartitioner::partition
 (

@@ -25,7 +25,6 @@ License
 #include "couplingReport.H"
 #include "addToRunTimeSelectionTable.H"
 #include "Time.H"
-#include "dictionaryKeys.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -50,14 +49,6 @@ namespace Foam
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-void Foam::oversetGraphDecomp::checkKeys() const
-{
-    wordList allowed(graphPartitioner::keys);
-    allowed.append(wordList({"couplings", "couplingWeight", "pose"}));
-    dictionaryKeys(allowed).named(typeName + "Coeffs").check(coeffs_);
-}
-
 
 void Foam::oversetGraphDecomp::notSupported(const string& what) const
 {
@@ -85,33 +76,17 @@ Foam::oversetGraphDecomp::oversetGraphDecomp
 )
 :
     decompositionMethod(decompDict, regionName),
-    coeffs_
+    settings_
     (
         findCoeffsDict
         (
             typeName + "Coeffs",
             selectionType::EXACT | selectionType::NULL_DICT
-        )
+        ),
+        typeName + "Coeffs"
     ),
-    couplingsFile_
-    (
-        coeffs_.getOrDefault<fileName>
-        (
-            "couplings", "constant"/oversetCouplings::typeName
-        )
-    ),
-    couplingWeight_
-    (
-        graphPartitioner::readInRange
-        (
-            coeffs_, "couplingWeight", 1, scalarMinMax(0, 1000)
-        )
-    ),
-    pose_(coeffs_.getOrDefault<label>("pose", -1)),
-    partitioner_(coeffs_)
-{
-    checkKeys();
-}
+    partitioner_(settings_)
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -127,27 +102,30 @@ Foam::labelList Foam::oversetGraphDecomp::decompose
     {
         notSupported("a decomposed mesh in parallel");
     }
-    oversetCouplings couplings(mesh.time(), couplingsFile_, mesh.nCells());
-    if (pose_ != -1)
+    oversetCouplings couplings
+    (
+        mesh.time(), settings_.couplings(), mesh.nCells()
+    );
+    if (settings_.pose() != -1)
     {
-        couplings.keepOnly(pose_);
+        couplings.keepOnly(settings_.pose());
     }
     const couplingGraph graph
     (
-        mesh, couplings, couplingWeight_, cellWeights
+        mesh, couplings, settings_.couplingWeight(), cellWeights
     );
     const labelList decomp(partitioner_.partition(graph, nDomains_));
     Info<< typeName << ": " << nDomains_ << " ranks, " << mesh.nCells()
         << " cells, " << partitioner_.libraryName() << " underneath, ";
-    if (pose_ == -1)
+    if (settings_.pose() == -1)
     {
         Info<< couplings.nPoses() << " poses";
     }
     else
     {
-        Info<< "kept pose " << pose_;
+        Info<< "kept pose " << settings_.pose();
     }
-    Info<< " of " << couplingsFile_ << nl;
+    Info<< " of " << settings_.couplings() << nl;
     couplingReport(mesh, graph, couplings, decomp, nDomains_)
         .write(Info, typeName);
     Info<< endl;
