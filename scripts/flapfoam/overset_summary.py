@@ -1,13 +1,12 @@
-#!/usr/bin/python3
 # License
 #     This file is part of flapFoam, derived from OpenFOAM: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """Table and chart of the overset stencil benchmark (bench/overset/run).
 
-    bench/overset/summarise.py -dir DIR [-startup K] [-o PREFIX] RUN [RUN ...]
+    python3 -m flapfoam.overset_summary -dir DIR [-startup K] [-o PREFIX] RUN [RUN ...]
 
 Each RUN is DIR/<level>-np<N>-<stencil>[-r<round>], a case run by
-cases/singleWingDrone/Allrun, with DIR/<RUN>.memory from peakMemory.py.
+cases/singleWingDrone/Allrun, with DIR/<RUN>.memory from flapfoam.peak_memory.
 Writes PREFIX.md (markdown table, one row per level, ranks and stencil:
 median per step after K start-up steps of rbd, overset, pimple, total and
 the overset parts, then the median over the rounds; overset share of total;

@@ -1,10 +1,9 @@
-#!/usr/bin/python3
 # License
 #     This file is part of flapFoam, derived from OpenFOAM: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """The bound stage's table (bench/scaling/run -stages bound).
 
-    bench/scaling/bound.py -dir DIR -levels "fine ..." -np "16 32 48"
+    python3 -m flapfoam.scaling_bound -dir DIR -levels "fine ..." -np "16 32 48"
         -poses "0 5 10 15" -o FILE.md
 
 At kept poses K of the couplings, two decompositions counted at that pose

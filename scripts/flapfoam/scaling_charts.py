@@ -1,7 +1,7 @@
 # License
 #     This file is part of flapFoam, derived from OpenFOAM: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""The charts of the scaling bench (summarise.py's data), for each level of
+"""The charts of the scaling bench (flapfoam.scaling_summary's data), for each level of
 -levels: PREFIX-<level>-step.png (the model's step against ranks per method,
 one panel per stencil, with the timed runs), PREFIX-<level>-split.png (its
 rbd/overset/pimple split per method and stencil), PREFIX-remote.png (the

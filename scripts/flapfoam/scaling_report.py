@@ -1,7 +1,7 @@
 # License
 #     This file is part of flapFoam, derived from OpenFOAM: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""The markdown tables of the scaling bench (summarise.py's data): the
+"""The markdown tables of the scaling bench (flapfoam.scaling_summary's data): the
 counted structure, the counted traffic, the model's costs, the model
 against the timed runs, the model's step per method and ranks, and the
 goals of issue 11 part 3 for oversetGraph."""

@@ -1,10 +1,9 @@
-#!/usr/bin/python3
 # License
 #     This file is part of flapFoam, derived from OpenFOAM: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """Table, model and charts of the scaling bench (bench/scaling/run).
 
-    bench/scaling/summarise.py -dir DIR -levels "fine ..." -countLevel L
+    python3 -m flapfoam.scaling_summary -dir DIR -levels "fine ..." -countLevel L
         -countSteps N1 N2 -timeLevel L [-startup K] [-o PREFIX]
 
 Reads what run left in DIR: the counted structure of every level
@@ -16,7 +15,7 @@ and any other counted with -countLevel), the timed runs
 DIR/pingPong.log; fits the model's costs (flapfoam.scaling_model) and writes
 PREFIX.md (tables: structure, traffic, timed against the model, the
 model's step per level, method, ranks and stencil, the goals of issue 11
-part 3) and the charts PREFIX-*.png (charts.py).
+part 3) and the charts PREFIX-*.png (flapfoam.scaling_charts).
 """
 
 import argparse
@@ -29,10 +28,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from flapfoam import (mpi_counts, rank_tables, scaling_model,
-                      scaling_validate, step_timers)
-import charts
-import report
+from flapfoam import (mpi_counts, rank_tables, scaling_charts,
+                      scaling_model, scaling_report, scaling_validate,
+                      step_timers)
 
 METHODS = ["simple", "hierarchical", "scotch", "metis", "oversetGraph"]
 STENCILS = ["inverseDistance", "octreeInverseDistance"]
@@ -266,18 +264,19 @@ def main():
     parser.add_argument("-timeLevel", default="coarse")
     parser.add_argument("-startup", type=int, default=3)
     parser.add_argument("-o", default=os.path.join(
-        os.path.dirname(os.path.abspath(__file__)), "results"))
+        os.path.dirname(os.path.abspath(__file__)), "..", "..", "bench",
+        "scaling", "results"))
     args = parser.parse_args()
     data = load(Bench(args.dir, args.levels.split(), args.countLevel,
                       tuple(args.countSteps), args.timeLevel, args.startup))
-    lines = report.tables(data)
+    lines = scaling_report.tables(data)
     lines += ["", "Machine: %s, %d CPUs, load average %s; %s." % (
         platform.node(), os.cpu_count(),
         " ".join("%.2f" % x for x in os.getloadavg()),
         time.strftime("%Y-%m-%d %H:%M"))]
     with open(args.o + ".md", "w") as f:
         f.write("\n".join(lines) + "\n")
-    charts.write_all(data, args.o)
+    scaling_charts.write_all(data, args.o)
     print("summarise: wrote %s.md and %s-*.png" % (args.o, args.o))
 
 
