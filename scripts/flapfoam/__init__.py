@@ -22,6 +22,7 @@ Modules (PEP 8 names; the tools run as python3 -m flapfoam.<module>):
     quasi_steady      the quasi-steady blade-element wing's reference
     chain_reference   planar chains by Lagrange's equations (scipy)
     scaling_model     the per-rank model of a step (bench/scaling)
+    forward_dynamics_table  bench/forwardDynamics' table
   meshes
     wing_geometry     the semi-elliptical wing (docs/paper.md, Table 1)
     block_mesh        blockMeshDict writer, 1-D cell distributions
@@ -44,8 +45,15 @@ Modules (PEP 8 names; the tools run as python3 -m flapfoam.<module>):
     authors_control   the paper authors' controllers as flapFoam entries
     rank_tables       per-rank tables of a decomposition
     scaling_causes    why one partition's PIMPLE costs more
-    scaling_validate  the scaling model against timed runs
+    scaling_validate  the scaling model against timed runs (and its
+                      command line)
+    scaling_summary   bench/scaling's tables and charts (scaling_report,
+                      scaling_charts)
+    scaling_bound     bench/scaling's bound stage: a pose's decomposition
     timed_rounds      the portable stage's timed runs
+    overset_summary   bench/overset's table and chart
+    peak_memory       a command's peak memory, summed over its processes
+    qs_integrators    the paper's integrator study on the quasi-steady model
   plots
     plotting          matplotlib set-up and the plots the cases share
     plot_step_timers  the step-timer bar chart
