@@ -5,6 +5,12 @@
 What the cases' meshGen.py share: the command line, the wing component and
 the background of a level, writing them with their topoSetDicts, and the
 summary (meshGen.json).  The cases add their own components and parameters.
+
+    python3 -m flapfoam.mesh_gen components MESHGEN.json
+
+prints the summary's components in merge order, a line each: the name and
+the command run on its points after blockMesh (if any), for
+scripts/makeOversetMesh.
 """
 
 import argparse
@@ -100,3 +106,27 @@ def finish(out, summary, message):
         json.dump(summary, fh, indent=2, default=float)
     print(message)
     return 0
+
+
+def components(summary):
+    """[(name, post command words)] of a meshGen.json, in merge order."""
+    with open(summary) as fh:
+        return [(c["name"], c.get("post") or [])
+                for c in json.load(fh)["components"]]
+
+
+def main(argv=None):
+    argv = sys.argv[1:] if argv is None else argv
+    if len(argv) != 2 or argv[0] != "components":
+        sys.exit("usage: python3 -m flapfoam.mesh_gen components"
+                 " MESHGEN.json")
+    listed = components(argv[1])
+    if not listed:
+        sys.exit("%s: no components" % argv[1])
+    for name, post in listed:
+        print(" ".join([name] + post))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

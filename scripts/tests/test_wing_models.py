@@ -74,3 +74,17 @@ def test_levels_refine_in_order():
             LEVELS[n][key] for n in order)
     ds = [LEVELS[n]["dsE"] for n in order]
     assert ds == sorted(ds, reverse=True)
+
+
+def test_mesh_components_in_merge_order(tmp_path, capsys):
+    from flapfoam import mesh_gen
+    summary = tmp_path / "meshGen.json"
+    summary.write_text('{"components": [{"name": "wing"}, {"name": "body",'
+                       ' "post": ["sphereMesh.py", "-map"]},'
+                       ' {"name": "background", "post": []}]}')
+    assert mesh_gen.components(str(summary)) == [
+        ("wing", []), ("body", ["sphereMesh.py", "-map"]),
+        ("background", [])]
+    assert mesh_gen.main(["components", str(summary)]) == 0
+    assert capsys.readouterr().out == \
+        "wing\nbody sphereMesh.py -map\nbackground\n"
