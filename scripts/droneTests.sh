@@ -153,12 +153,12 @@ result()
     labelled "$label" "$python" "$checkRun" "$@"
 }
 
-# flightData <label> <flightData.py arguments...>
+# flightData <label> <flapfoam.flight_data arguments...>
 flightData()
 {
     local label="$1"
     shift
-    labelled "$label" "$python" "$projectScripts/flightData.py" "$@"
+    labelled "$label" "$python" -m flapfoam.flight_data "$@"
 }
 
 # quasiSteady <label> <run folder> <rows> <Allrun options...>: Allrun

@@ -7,7 +7,7 @@ Plots of a single-wing drone run (Allrun calls it at the end of a run).
     scripts/plotRun.py [-case DIR] [-o OUTDIR] [-dict FILE]
 
 Reads the run's flight data, postProcessing/flightData/<start>/flightData.h5
-(scripts/flightData.py; restarts append to it), or, for runs without it,
+(flapfoam.flight_data; restarts append to it), or, for runs without it,
 postProcessing/eABAMeshMotion/<startTime>/{joints,bodies}.dat of the case
 (the folders of a run and its restarts joined in time order: a restart
 folder, whose first row is its first step, replaces the rows of the earlier
@@ -25,7 +25,7 @@ folders from that time on), and writes, in OUTDIR (default DIR/plots):
                          from the imposedMotion entries of the run's
                          constant/dynamicMeshDict, and their difference;
   stepTimers.png         (d) the step-timer bar chart
-                         (scripts/plotStepTimers.py on
+                         (flapfoam.plot_step_timers on
                          postProcessing/stepTimers).
 
 Reference values (docs/paper.md section 3):
@@ -278,7 +278,7 @@ def main():
     # (d) step timers
     rc = stepTimers(case, out, os.path.basename(os.path.abspath(case)))
     if rc != 0:
-        print("plotRun: plotStepTimers.py failed (exit %d)" % rc)
+        print("plotRun: the step-timer chart failed (exit %d)" % rc)
         return rc
     print("plotRun: wrote %s/{trajectory,forceCoefficients,prescribedJoints,"
           "stepTimers}.png" % out)
