@@ -50,7 +50,7 @@ import argparse
 import math
 import sys
 
-from flapfoam.foam_dict import readFoamDict
+from flapfoam.foam_dict import read_foam_dict
 
 TYPES = ("midStartControl_xzth_PD", "midStartControl_xzth_linearPD")
 LIMITS = {"amplitude": ("Aphi_min", "Aphi_max"),
@@ -71,7 +71,7 @@ def fail(msg):
     sys.exit("authorsControl: " + msg)
 
 
-def findModel(d, solver):
+def find_model(d, solver):
     """The sub-dictionary with `bodies`: solvers/<solver> or the top."""
     if "bodies" in d:
         return d, "the top level"
@@ -91,7 +91,7 @@ def findModel(d, solver):
     return solvers[names[0]], "solvers/" + names[0]
 
 
-def findEntry(model, where, name):
+def find_entry(model, where, name):
     motions = model.get("ImposedMotion", model.get("imposedMotion", {}))
     found = [n for n, e in motions.items() if isinstance(e, dict)
              and e.get("motionType", [""])[0].strip('"') in TYPES]
@@ -220,11 +220,11 @@ def main(argv=None):
         fail("-blend %g: allowed 0 to 1 (a fraction of the cycle)"
              % args.blend)
     try:
-        d = readFoamDict(args.dict)
+        d = read_foam_dict(args.dict)
     except OSError as e:
         fail("cannot read %s: %s" % (args.dict, e))
-    model, where = findModel(d, args.solver)
-    name, entry = findEntry(model, where, args.entry)
+    model, where = find_model(d, args.solver)
+    name, entry = find_entry(model, where, args.entry)
     bodies = [b for b, e in model["bodies"].items() if isinstance(e, dict)]
     body = args.body
     if body is None:

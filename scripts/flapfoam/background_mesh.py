@@ -27,11 +27,11 @@ BACKGROUND = dict(
 )
 
 
-def backgroundCellSize(lev, bg):
+def background_cell_size(lev, bg):
     return bg["side"]/(lev["N0"]*2**lev["nRef"])
 
 
-def backgroundMesh(lev, bg, env):
+def background_block_mesh(lev, bg, env):
     side = bg["side"]
     c = np.asarray(bg["centre"], dtype=float)
     N0, nRef = lev["N0"], lev["nRef"]
@@ -45,7 +45,7 @@ def backgroundMesh(lev, bg, env):
         verts.append(bm.vertex(k, p))
     for a_, b_ in BlockMesh.HEX_EDGES:
         if (a_, b_) not in bm.sizes and (b_, a_) not in bm.sizes:
-            bm.setSizes(verts[a_], verts[b_], np.full(N0, h0))
+            bm.set_sizes(verts[a_], verts[b_], np.full(N0, h0))
     b = bm.block(verts, "background")
     bm.patch("farField", "patch")
     for side_ in BlockMesh.HEX_FACES:
@@ -73,7 +73,7 @@ def backgroundMesh(lev, bg, env):
     return bm, info
 
 
-def topoSetRefine(region, centre, extra=()):
+def topo_set_refine(region, centre, extra=()):
     """topoSetDict of a refinement pass: the region's cylinders, and the
     extra actions (action, source, body) after them."""
     c = centre

@@ -17,7 +17,7 @@ import numpy as np
 # 1-D cell distributions
 # --------------------------------------------------------------------------
 
-def sizesGeometric(L, N, d0, d1=None, q=1.2):
+def sizes_geometric(L, N, d0, d1=None, q=1.2):
     """N cell sizes summing to L: growing from d0 (and, if d1 is given,
     shrinking to d1 at the end) by the ratio q, capped by a uniform size
     Dm found so that the sizes add up to L.  If L is too long for q, q is
@@ -54,7 +54,7 @@ def sizesGeometric(L, N, d0, d1=None, q=1.2):
     return s*L/s.sum()
 
 
-def nCellsGrowth(L, d0, dEnd, q):
+def n_cells_growth(L, d0, dEnd, q):
     """Cells to cover L starting at d0, growing by q up to dEnd, then
     uniform dEnd."""
     n, s, x = 0, d0, 0.0
@@ -65,7 +65,7 @@ def nCellsGrowth(L, d0, dEnd, q):
     return n
 
 
-def gradingSections(sizes, tol=1e-6):
+def grading_sections(sizes, tol=1e-6):
     """blockMesh multi-grading ((lenFrac cellFrac expansion) ...) that
     reproduces the sizes exactly: runs of constant ratio."""
     sizes = np.asarray(sizes, dtype=float)
@@ -85,8 +85,8 @@ def gradingSections(sizes, tol=1e-6):
     return secs
 
 
-def fmtGrading(sizes):
-    secs = gradingSections(sizes)
+def fmt_grading(sizes):
+    secs = grading_sections(sizes)
     if len(secs) == 1:
         return "%.10g" % secs[0][2]
     return "(" + " ".join("(%.12g %.12g %.12g)" % s for s in secs) + ")"
@@ -122,13 +122,13 @@ class BlockMesh:
             self.vertices.append(np.asarray(p, dtype=float))
         return self.vindex[key]
 
-    def setSizes(self, a, b, s):
+    def set_sizes(self, a, b, s):
         s = np.asarray(s, dtype=float)
         if (b, a) in self.sizes:
             raise KeyError("edge %s given twice" % ((a, b),))
         self.sizes[(a, b)] = s
 
-    def getSizes(self, a, b):
+    def get_sizes(self, a, b):
         if (a, b) in self.sizes:
             return self.sizes[(a, b)]
         return self.sizes[(b, a)][::-1]
@@ -139,11 +139,11 @@ class BlockMesh:
         self.edges[(a, b)] = np.asarray(pts3, dtype=float)
 
     def block(self, verts, zone):
-        n = [len(self.getSizes(verts[0], verts[1])),
-             len(self.getSizes(verts[0], verts[3])),
-             len(self.getSizes(verts[0], verts[4]))]
+        n = [len(self.get_sizes(verts[0], verts[1])),
+             len(self.get_sizes(verts[0], verts[3])),
+             len(self.get_sizes(verts[0], verts[4]))]
         for k, (i, j) in enumerate(self.HEX_EDGES):
-            nn = len(self.getSizes(verts[i], verts[j]))
+            nn = len(self.get_sizes(verts[i], verts[j]))
             if nn != n[k//4]:
                 raise ValueError("inconsistent cell count on block %s edge "
                                  "%d: %d vs %d" % (verts, k, nn, n[k//4]))
@@ -158,7 +158,7 @@ class BlockMesh:
     def patch(self, name, ptype):
         self.patches[name] = (ptype, [])
 
-    def nCells(self):
+    def n_cells(self):
         return int(sum(np.prod(b[2]) for b in self.blocks))
 
     def write(self, path, header=""):
@@ -170,7 +170,7 @@ class BlockMesh:
             out.append("    (%.12g %.12g %.12g) // %d" % (v[0], v[1], v[2], i))
         out.append(");\n\nblocks\n(")
         for verts, zone, n in self.blocks:
-            gr = [fmtGrading(self.getSizes(verts[i], verts[j]))
+            gr = [fmt_grading(self.get_sizes(verts[i], verts[j]))
                   for i, j in self.HEX_EDGES]
             out.append("    hex (%s) %s (%d %d %d)" % (
                 " ".join(map(str, verts)), zone, n[0], n[1], n[2]))
@@ -253,7 +253,7 @@ MINIMAL_FVSOLUTION = FOAM_HEADER % ("dictionary", "fvSolution") + """
 """ + FOAM_FOOTER
 
 
-def writeCase(path, bm, header, extra=None):
+def write_case(path, bm, header, extra=None):
     sysdir = os.path.join(path, "system")
     os.makedirs(sysdir, exist_ok=True)
     bm.write(os.path.join(sysdir, "blockMeshDict"), header)

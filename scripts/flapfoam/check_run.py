@@ -68,9 +68,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from flapfoam import checks, step_timers
-from flapfoam.foam_dict import multibodyCoeffs, readFoamDict, readState
-from flapfoam.tables import joinedTable, startFolders, timeFolders
-from flapfoam.wang import imposedJoints
+from flapfoam.foam_dict import multibody_coeffs, read_foam_dict, read_state
+from flapfoam.tables import joined_table, start_folders, time_folders
+from flapfoam.wang import imposed_joints
 
 
 # --------------------------------------------------------------------------
@@ -82,35 +82,35 @@ def report(ok, name, text):
 def states(case):
     """The rigidBodyMotionState of every time folder: list of dicts."""
     out = []
-    for _, d in timeFolders(case):
+    for _, d in time_folders(case):
         p = os.path.join(d, "uniform", "rigidBodyMotionState")
         if os.path.isfile(p):
-            out.append(readState(p))
+            out.append(read_state(p))
     return out
 
 
 def joints(case, name="eABAMeshMotion"):
     """(columns, rows) of joints.dat joined over the start folders."""
     base = os.path.join(case, "postProcessing", name)
-    if not startFolders(base):
+    if not start_folders(base):
         sys.exit("checkRun: no %s/<time>/joints.dat" % base)
-    return joinedTable(base, "joints.dat", keepEarlierAtStart=False)
+    return joined_table(base, "joints.dat", keepEarlierAtStart=False)
 
 
-def relDiff(a, b, floor):
+def rel_diff(a, b, floor):
     return np.abs(a - b)/np.maximum(np.maximum(np.abs(a), np.abs(b)), floor)
 
 
-def multibodyDict(case):
-    return multibodyCoeffs(os.path.join(case, "constant", "dynamicMeshDict"))
+def multibody_dict(case):
+    return multibody_coeffs(os.path.join(case, "constant", "dynamicMeshDict"))
 
 
 # --------------------------------------------------------------------------
 
-def checkPrescribed(case, name, tol, tol_table):
+def check_prescribed(case, name, tol, tol_table):
     """The prescribed joints against the analytic Wang motion (tol: the
     state files', tol_table: joints.dat's)."""
-    imposed = imposedJoints(multibodyDict(case))
+    imposed = imposed_joints(multibody_dict(case))
     if not imposed:
         return report(False, "prescribed", "no imposedMotion entries")
 
@@ -184,7 +184,7 @@ def pimple_parts(rows, ranks):
     return share, inside
 
 
-def checkTimers(case, name, tol, n_startup):
+def check_timers(case, name, tol, n_startup):
     """The step timers' closure (tol) and PIMPLE parts after n_startup
     start-up steps of each file."""
     files = step_timers.find_files(os.path.join(case, "postProcessing",
@@ -223,7 +223,7 @@ def checkTimers(case, name, tol, n_startup):
                         "yes" if solves[1] else "NO")))
 
 
-def matchRows(A, B):
+def match_rows(A, B):
     """Indices of rows of A and B with the same time."""
     ia, ib = [], []
     j = 0
@@ -248,7 +248,7 @@ class JointsComparison:
     state: bool = False
 
 
-def stateDifferences(a, b, ca, A):
+def state_differences(a, b, ca, A):
     """{column: relative difference} of the last rigidBodyMotionState of
     runs a and b (17 digits; floors from a's joints.dat A, columns ca);
     None if they have none at a common last time."""
@@ -261,17 +261,17 @@ def stateDifferences(a, b, ca, A):
         for qi in range(len(sa[-1][key])):
             col = "%s%d" % (pre, qi)
             floor = 1e-3*np.abs(A[:, ca.index(col)]).max() + 1e-300
-            out[col] = float(relDiff(sa[-1][key][qi], sb[-1][key][qi],
+            out[col] = float(rel_diff(sa[-1][key][qi], sb[-1][key][qi],
                                      floor))
     return sa[-1]["t"], out
 
 
-def checkCompare(a, b, name, want):
+def check_compare(a, b, name, want):
     """joints.dat of run a against run b (want: a JointsComparison)."""
     ca, A = joints(a)
     cb, B = joints(b)
     cols = want.columns or ca[1:]
-    ia, ib = matchRows(A, B)
+    ia, ib = match_rows(A, B)
     if len(ia) == 0:
         return report(False, name or "compare", "no common times")
     if want.rows == "last":
@@ -284,12 +284,12 @@ def checkCompare(a, b, name, want):
     for col in cols:
         i, k = ca.index(col), cb.index(col)
         floor = 1e-3*np.abs(A[:, i]).max() + 1e-300
-        worst[col] = float(relDiff(A[ia, i], B[ib, k], floor).max())
+        worst[col] = float(rel_diff(A[ia, i], B[ib, k], floor).max())
     text = ", ".join("%s %.1e" % (k, v) for k, v in worst.items())
     maxRel = max(worst.values())
 
     if want.state:
-        last = stateDifferences(a, b, ca, A)
+        last = state_differences(a, b, ca, A)
         if last is None:
             return report(False, name or "compare",
                           "no rigidBodyMotionState at a common last time")
@@ -306,7 +306,7 @@ def checkCompare(a, b, name, want):
                   % (want.rows, len(ia), maxRel, want.tol, text))
 
 
-def checkInitial(case, name, q, qdot_sign, tol):
+def check_initial(case, name, q, qdot_sign, tol):
     """The first row of joints.dat: q ("i:value,...") within tol, the signs
     of qDot (qdot_sign "i:sign,...", or None)."""
     cols, J = joints(case)
@@ -328,7 +328,7 @@ def checkInitial(case, name, q, qdot_sign, tol):
                   % (J[0, 0], ", ".join(parts), tol))
 
 
-def checkRbs(a, b, name, tol):
+def check_rbs(a, b, name, tol):
     """Every row of run a's eABAMeshMotion joints.dat against run b's
     rigidBodySimulate one (relative tol)."""
     ca, A = joints(a)
@@ -336,7 +336,7 @@ def checkRbs(a, b, name, tol):
     if ca != cb:
         return report(False, name or "rbs", "columns differ: %s / %s"
                       % (ca, cb))
-    ia, ib = matchRows(A, B)
+    ia, ib = match_rows(A, B)
     if len(ia) != len(A) or len(ib) != len(B):
         return report(False, name or "rbs",
                       "rows do not align: %d eABAMeshMotion, %d "
@@ -345,7 +345,7 @@ def checkRbs(a, b, name, tol):
     worst, worstCol = 0.0, None
     for i, col in enumerate(ca[1:], start=1):
         floor = 1e-3*np.abs(A[:, i]).max() + 1e-300
-        r = float(relDiff(A[ia, i], B[ib, i], floor).max())
+        r = float(rel_diff(A[ia, i], B[ib, i], floor).max())
         if r > worst:
             worst, worstCol = r, col
     return report(worst <= tol, name or "rbs",
@@ -354,16 +354,16 @@ def checkRbs(a, b, name, tol):
                   % (len(ia), len(ca) - 1, worst, worstCol, tol))
 
 
-def dictLeaves(d, prefix=""):
+def dict_leaves(d, prefix=""):
     """(slash path, tokens) of every entry of a readFoamDict dict."""
     for k, v in d.items():
         if isinstance(v, dict):
-            yield from dictLeaves(v, prefix + k + "/")
+            yield from dict_leaves(v, prefix + k + "/")
         else:
             yield prefix + k, v
 
 
-def sameTokens(a, b):
+def same_tokens(a, b):
     """Equal token lists: numbers as doubles, words as written."""
     if len(a) != len(b):
         return False
@@ -377,14 +377,14 @@ def sameTokens(a, b):
     return True
 
 
-def checkDictionary(run_file, given_file, name, changed):
+def check_dictionary(run_file, given_file, name, changed):
     """Every entry of the user's dictionary given_file holds the same value
     in the run's copy run_file, but the changed keys (present there)."""
-    given = dict(dictLeaves(readFoamDict(given_file)))
-    run = dict(dictLeaves(readFoamDict(run_file)))
+    given = dict(dict_leaves(read_foam_dict(given_file)))
+    run = dict(dict_leaves(read_foam_dict(run_file)))
     changed = set(changed)
     bad = [k for k in sorted(given) if k not in changed and k != "FoamFile/note"
-           and not sameTokens(given[k], run.get(k, []))]
+           and not same_tokens(given[k], run.get(k, []))]
     missing = sorted(changed - set(run))
     nNumbers = sum(1 for k in given if k not in changed for t in given[k]
                    if re.match(r"^[-+]?[0-9.]+([eE][-+]?[0-9]+)?$", t))
@@ -413,14 +413,14 @@ def main(argv=None):
     p.add_argument("case")
     p.add_argument("-tol", type=float, default=1e-12)
     p.add_argument("-tolTable", type=float, default=1e-11)
-    p.set_defaults(func=lambda a: checkPrescribed(
+    p.set_defaults(func=lambda a: check_prescribed(
         a.case, a.name, a.tol, a.tolTable))
 
     p = sub.add_parser("timers")
     p.add_argument("case")
     p.add_argument("-tol", type=float, default=0.05)
     p.add_argument("-nStartup", type=int, default=2)
-    p.set_defaults(func=lambda a: checkTimers(
+    p.set_defaults(func=lambda a: check_timers(
         a.case, a.name, a.tol, a.nStartup))
 
     p = sub.add_parser("compare")
@@ -430,7 +430,7 @@ def main(argv=None):
     p.add_argument("-tol", type=float, default=1e-6)
     p.add_argument("-rows", choices=("last", "all"), default="last")
     p.add_argument("-state", action="store_true")
-    p.set_defaults(func=lambda a: checkCompare(
+    p.set_defaults(func=lambda a: check_compare(
         a.a, a.b, a.name, JointsComparison(
             a.columns.split(",") if a.columns else None, a.tol, a.rows,
             a.state)))
@@ -440,21 +440,21 @@ def main(argv=None):
     p.add_argument("-q", required=True)
     p.add_argument("-qDotSign", default=None)
     p.add_argument("-tol", type=float, default=1e-12)
-    p.set_defaults(func=lambda a: checkInitial(
+    p.set_defaults(func=lambda a: check_initial(
         a.case, a.name, a.q, a.qDotSign, a.tol))
 
     p = sub.add_parser("dictionary")
     p.add_argument("run")
     p.add_argument("given")
     p.add_argument("-changed", nargs="*", default=[])
-    p.set_defaults(func=lambda a: checkDictionary(
+    p.set_defaults(func=lambda a: check_dictionary(
         a.run, a.given, a.name, a.changed))
 
     p = sub.add_parser("rbs")
     p.add_argument("a")
     p.add_argument("b")
     p.add_argument("-tol", type=float, default=1e-10)
-    p.set_defaults(func=lambda a: checkRbs(a.a, a.b, a.name, a.tol))
+    p.set_defaults(func=lambda a: check_rbs(a.a, a.b, a.name, a.tol))
 
     args = ap.parse_args(argv)
     return args.func(args)

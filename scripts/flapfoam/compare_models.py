@@ -26,7 +26,7 @@ import sys
 import numpy as np
 
 from flapfoam import flight_data
-from flapfoam.plotting import cycleAxes, plt, save, shadeDownstrokes
+from flapfoam.plotting import cycle_axes, plt, save, shade_downstrokes
 
 
 def run(case, body):
@@ -43,7 +43,7 @@ def run(case, body):
     return d["time"], d["joints/q"], d["joints/qDot"], d[key], attrs
 
 
-def cycleMeans(t, C, period):
+def cycle_means(t, C, period):
     """[(cycle, mean C_x, mean C_z)] over the whole cycles from t[0]; the
     first row (the initial state, loads NaN) left out, rows weighted by
     their time steps."""
@@ -66,8 +66,8 @@ def compare(cfd, qs, period):
         sys.exit("compareModels: the QS run ends at t = %g s, before the"
                  " CFD run's %g s" % (tQ[-1], tC[-1]))
     rows = []
-    for (k, cx, cz), (_, qx, qz) in zip(cycleMeans(tC, cC, period),
-                                        cycleMeans(tQ[tQ <= tC[-1] + 1e-12],
+    for (k, cx, cz), (_, qx, qz) in zip(cycle_means(tC, cC, period),
+                                        cycle_means(tQ[tQ <= tC[-1] + 1e-12],
                                                    cQ[tQ <= tC[-1] + 1e-12],
                                                    period)):
         rows.append((k, cx, qx, cz, qz, cz/qz))
@@ -101,12 +101,12 @@ def plots(cfd, qs, period, out):
     tQ, qQ, _, cQ, _ = qs
     sel = tQ <= tC[-1] + 1e-12
     fig, ax = plt.subplots(figsize=(8, 4.5))
-    shadeDownstrokes(ax, tC/period, qDotC[:, 2])
+    shade_downstrokes(ax, tC/period, qDotC[:, 2])
     for C, t, style, label in ((cC, tC, "-", "CFD"),
                                (cQ[sel], tQ[sel], "--", "QS")):
         ax.plot(t/period, C[:, 0], "C0" + style, label="C_xI " + label)
         ax.plot(t/period, C[:, 1], "C1" + style, label="C_zI " + label)
-    cycleAxes(ax, "C = F / (0.5 rho S U_ref^2)",
+    cycle_axes(ax, "C = F / (0.5 rho S U_ref^2)",
               "Wing force coefficients: CFD and quasi-steady")
     ax.legend(fontsize=8)
     save(fig, out, "compareModels-coefficients.png")
@@ -115,7 +115,7 @@ def plots(cfd, qs, period, out):
         ax.plot(tC/period, 1e3*qC[:, j], colour + "-", label=name + " CFD")
         ax.plot(tQ[sel]/period, 1e3*qQ[sel, j], colour + "--",
                 label=name + " QS")
-    cycleAxes(ax, "[mm]", "Trajectory: CFD and quasi-steady")
+    cycle_axes(ax, "[mm]", "Trajectory: CFD and quasi-steady")
     ax.legend(fontsize=8)
     save(fig, out, "compareModels-trajectory.png")
 

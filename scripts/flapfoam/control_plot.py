@@ -51,7 +51,7 @@ import numpy as np
 
 from flapfoam import flight_data
 from flapfoam.checks import report
-from flapfoam.foam_dict import readFoamDict
+from flapfoam.foam_dict import read_foam_dict
 
 # quantity: (dataset of bodies/BODY, display scale, display unit, SI unit,
 # default band [SI])
@@ -72,7 +72,7 @@ class ControlPlotError(Exception):
     what is allowed."""
 
 
-def readCoeffs(case):
+def read_coeffs(case):
     """The expanded multibody coefficients (eABAMeshMotionCoeffs, else the
     whole dictionary) of a run's constant/dynamicMeshDict."""
     path = os.path.join(case, "constant", "dynamicMeshDict")
@@ -88,11 +88,11 @@ def readCoeffs(case):
     with tempfile.NamedTemporaryFile("w", suffix=".dict") as f:
         f.write(run.stdout)
         f.flush()
-        d = readFoamDict(f.name)
+        d = read_foam_dict(f.name)
     return d.get("eABAMeshMotionCoeffs", d)
 
 
-def setPointFunction(tokens, where):
+def set_point_function(tokens, where):
     """The set-point t -> value of a Function1 entry's tokens: a number,
     constant V, zero, one or table ((t v) ...) (linear, clamped)."""
     words = [w for w in tokens if w not in "()"] \
@@ -137,7 +137,7 @@ class Term:
             raise ControlPlotError("%s/quantity %s: not allowed (one of: %s)"
                                    % (where, self.quantity,
                                       " ".join(QUANTITIES)))
-        self.setPoint = setPointFunction(tokens, where + "/setPoint")
+        self.setPoint = set_point_function(tokens, where + "/setPoint")
         _, self.scale, self.unit, self.si, self.defaultBand = \
             QUANTITIES[self.quantity]
 
@@ -158,9 +158,9 @@ class Term:
         return np.arctan2(v[:, 3], v[:, 0])
 
 
-def controlledTerms(case):
+def controlled_terms(case):
     """(controller coefficients, [Term]) of a run's dictionary."""
-    coeffs = readCoeffs(case)
+    coeffs = read_coeffs(case)
     where = os.path.join(case, "constant", "dynamicMeshDict") \
         + ":eABAMeshMotionCoeffs/controller"
     controller = coeffs.get("controller")
@@ -186,7 +186,7 @@ class Run:
         import h5py
         self.case = case
         self.name = os.path.basename(os.path.normpath(case))
-        self.controller, self.terms = controlledTerms(case)
+        self.controller, self.terms = controlled_terms(case)
         try:
             _, data = flight_data.load(case)
             with h5py.File(flight_data.find(case), "r") as f:
@@ -213,10 +213,10 @@ class Run:
             raise ControlPlotError("-settle %g: not allowed (before the end"
                                    " of %s, t = %g s)" % (settle, self.case,
                                                           self.t[-1]))
-        return errorMetrics(self.t, self.errors[label], band, settle)
+        return error_metrics(self.t, self.errors[label], band, settle)
 
 
-def errorMetrics(t, e, band, settle):
+def error_metrics(t, e, band, settle):
     """{METRICS} of the error e at the times t, band and settle T: the
     settling time (the row after the last one out of the band; t[0] if
     none is, inf if the last is), max |e|, mean e, rms e after T, and
@@ -236,7 +236,7 @@ def errorMetrics(t, e, band, settle):
             "inBand": int(worst <= band and np.isfinite(worst))}
 
 
-def parseBands(text, terms):
+def parse_bands(text, terms):
     """{label: band} of -band (positional or LABEL=B), the defaults
     elsewhere."""
     bands = {s.label: s.defaultBand for s in terms}
@@ -265,12 +265,12 @@ def parseBands(text, terms):
     return bands
 
 
-def metricRows(runs, bandText, settle):
+def metric_rows(runs, bandText, settle):
     """The rows of the metrics table: one per run and controlled
     quantity."""
     rows = []
     for r in runs:
-        bands = parseBands(bandText, r.terms)
+        bands = parse_bands(bandText, r.terms)
         for s in r.terms:
             row = {"run": r.name, "quantity": s.label, "measure":
                    "%s %s %s" % (s.body, s.quantity, "xyz"[s.component]),
@@ -280,7 +280,7 @@ def metricRows(runs, bandText, settle):
     return rows
 
 
-def printTable(rows, runs):
+def print_table(rows, runs):
     """The metrics in display units (mm, deg)."""
     terms = {s.label: s for r in runs for s in r.terms}
     print("%-16s %-14s %11s %9s %11s %11s %11s %6s" % (
@@ -295,7 +295,7 @@ def printTable(rows, runs):
             "yes" if row["inBand"] else "NO"))
 
 
-def plotStates(runs, out, bands, settle):
+def plot_states(runs, out, bands, settle):
     """control-states.png: every controlled quantity of every run against
     time, its set-point (dashed), the band of the first run after
     settle."""
@@ -325,7 +325,7 @@ def plotStates(runs, out, bands, settle):
     save(fig, out, "control-states.png")
 
 
-def plotOutputs(runs, out):
+def plot_outputs(runs, out):
     """control-outputs.png: every loop's output (the flight data's
     LOOP.output columns) of every run against time."""
     from flapfoam.plotting import plt, save
@@ -361,7 +361,7 @@ def arguments(argv):
     return parser.parse_args(argv)
 
 
-def defaultSettle(runs):
+def default_settle(runs):
     """Half of the shortest run."""
     return min(0.5*(r.t[0] + r.t[-1]) for r in runs)
 
@@ -370,16 +370,16 @@ def main(argv=None):
     args = arguments(argv)
     try:
         runs = [Run(case) for case in args.runs]
-        settle = defaultSettle(runs) if args.settle is None else args.settle
-        rows = metricRows(runs, args.band, settle)
+        settle = default_settle(runs) if args.settle is None else args.settle
+        rows = metric_rows(runs, args.band, settle)
         out = args.o or os.path.join(args.runs[0], "plots")
         os.makedirs(out, exist_ok=True)
-        from flapfoam.qs_sweep import writeTable
-        writeTable(os.path.join(out, "control-metrics.csv"), rows,
+        from flapfoam.qs_sweep import write_table
+        write_table(os.path.join(out, "control-metrics.csv"), rows,
                    ["run", "quantity"])
-        printTable(rows, runs)
-        plotStates(runs, out, parseBands(args.band, runs[0].terms), settle)
-        plotOutputs(runs, out)
+        print_table(rows, runs)
+        plot_states(runs, out, parse_bands(args.band, runs[0].terms), settle)
+        plot_outputs(runs, out)
         print("controlPlot: settle %g s; %s/control-{states,outputs}.png,"
               " control-metrics.csv" % (settle, out))
     except ControlPlotError as e:

@@ -50,7 +50,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from flapfoam.checks import report
-from flapfoam.tables import timeValue
+from flapfoam.tables import time_value
 
 WAIT = 5.0
 
@@ -60,7 +60,7 @@ def find(case):
     files = glob.glob(os.path.join(case, "postProcessing", "flightData", "*",
                                    "flightData.h5"))
 
-    files.sort(key=lambda f: timeValue(os.path.basename(os.path.dirname(f)),
+    files.sort(key=lambda f: time_value(os.path.basename(os.path.dirname(f)),
                                        float("inf")))
     return files[0] if files else None
 
@@ -86,7 +86,7 @@ def opened(path):
     can be read: a reader that holds the file during the run."""
     import h5py
 
-    def openWhole():
+    def open_whole():
         f = h5py.File(path, "r")
         try:
             f["time"].shape
@@ -94,7 +94,7 @@ def opened(path):
             f.close()
             raise
         return f
-    return retried(openWhole, path)
+    return retried(open_whole, path)
 
 
 def load(case):

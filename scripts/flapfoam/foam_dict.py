@@ -13,7 +13,7 @@ import subprocess
 import numpy as np
 
 
-def readFoamDict(path):
+def read_foam_dict(path):
     """Nested dict of an OpenFOAM dictionary file: sub-dictionaries as dicts,
     entries as lists of tokens (strings)."""
     with open(path) as f:
@@ -55,7 +55,7 @@ def readFoamDict(path):
     return parse()
 
 
-def readState(path):
+def read_state(path):
     """{q, qDot, qDdot: arrays, t: float} of a rigidBodyMotionState; an
     entry the file lacks (a hand-written state: no qDdot, no t) is not in
     the result."""
@@ -76,14 +76,14 @@ def readState(path):
     return state
 
 
-def multibodyCoeffs(path):
+def multibody_coeffs(path):
     """The multibody motion's coefficients of a dynamicMeshDict: its
     eABAMeshMotionCoeffs, else the whole dictionary."""
-    d = readFoamDict(path)
+    d = read_foam_dict(path)
     return d.get("eABAMeshMotionCoeffs", d)
 
 
-def setEntry(path, entry, value):
+def set_entry(path, entry, value):
     """foamDictionary -set ENTRY VALUE (value None: -remove) on the file.
     foamDictionary writes the whole file again: at 17 digits, not at its
     default 6, so that the other numbers stay as they were."""

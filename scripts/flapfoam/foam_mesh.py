@@ -57,7 +57,7 @@ def _ascii_numbers(block, dtype):
     return np.array(cleaned.split(), dtype=dtype)
 
 
-def readPoints(path):
+def read_points(path):
     data = _read(path)
     fmt, _, pos = _header(data)
     n, start, _ = _list_start(data, pos)
@@ -68,7 +68,7 @@ def readPoints(path):
     return _ascii_numbers(data[start:end], float).reshape(n, 3)
 
 
-def readLabels(path):
+def read_labels(path):
     data = _read(path)
     fmt, _, pos = _header(data)
     n, start, br = _list_start(data, pos)
@@ -82,7 +82,7 @@ def readLabels(path):
     return np.array(data[start:end].split(), dtype=np.int64)
 
 
-def readFaces(path):
+def read_faces(path):
     """(offsets, vertices) of the faces (faceCompactList)."""
     data = _read(path)
     fmt, cls, pos = _header(data)
@@ -117,7 +117,7 @@ def readFaces(path):
     return offs, verts
 
 
-def readBoundary(path):
+def read_boundary(path):
     text = _strip_comments(_read(path)).decode("latin-1")
     _, _, pos = _header(text.encode("latin-1"))
     body = text[pos:]
@@ -131,7 +131,7 @@ def readBoundary(path):
     return out
 
 
-def readZoneSizes(path):
+def read_zone_sizes(path):
     """{zoneName: nCells} of a cellZones file (sizes from the list headers)."""
     data = _read(path)
     fmt, _, pos = _header(data)
@@ -146,15 +146,15 @@ def readZoneSizes(path):
     return out
 
 
-def readNCells(owner_path):
+def read_n_cells(owner_path):
     data = _read(owner_path)
     m = re.search(rb"nCells:\s*(\d+)", data[:2000])
     if m:
         return int(m.group(1))
-    return int(readLabels(owner_path).max()) + 1
+    return int(read_labels(owner_path).max()) + 1
 
 
-def faceAreasVec(points, offs, verts, faces):
+def face_areas_vec(points, offs, verts, faces):
     """Vectorised face area vectors (faces of any size)."""
     faces = np.asarray(faces)
     sizes = offs[faces + 1] - offs[faces]
@@ -169,7 +169,7 @@ def faceAreasVec(points, offs, verts, faces):
     return area
 
 
-def readScalarField(path):
+def read_scalar_field(path):
     """Internal field of a volScalarField (uniform or nonuniform)."""
     data = _read(path)
     fmt, _, pos = _header(data)

@@ -54,13 +54,13 @@ import numpy as np
 
 from flapfoam import control_plot
 from flapfoam.control_plot import ControlPlotError
-from flapfoam.qs_sweep import (Sweep, SweepError, edges, gridPoints, mapPair,
-                              parseGrid, writeTable)
+from flapfoam.qs_sweep import (Sweep, SweepError, edges, grid_points, map_pair,
+                              parse_grid, write_table)
 
 GAINS = ("Kp", "Ki", "Kd", "rateSetPoint")
 
 
-def foamDictionary(*args):
+def foam_dictionary(*args):
     """The output of foamDictionary ARGS (SweepError if it fails)."""
     run = subprocess.run(["foamDictionary"] + list(args),
                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
@@ -99,12 +99,12 @@ class Template:
             raise SweepError("%s -model quasiSteady -variant %s -cycles 1"
                              " failed (exit %d, %s): %s" % (allrun, variant,
                                                             rc, log, tail))
-        _, self.terms = control_plot.controlledTerms(self.folder)
+        _, self.terms = control_plot.controlled_terms(self.folder)
         self.bounds = {"%s.%s" % (s.label, g): (-math.inf, math.inf)
                        for s in self.terms for g in GAINS}
         self.dict = os.path.join(self.folder, "constant", "dynamicMeshDict")
         self.controlDict = os.path.join(self.folder, "system", "controlDict")
-        self.period = float(foamDictionary("-entry", "endTime", "-value",
+        self.period = float(foam_dictionary("-entry", "endTime", "-value",
                                            self.controlDict))
         self.names = []
         self.text = None
@@ -115,12 +115,12 @@ class Template:
         self.names = list(grid)
         for i, name in enumerate(self.names):
             loop, term, gain = name.split(".")
-            foamDictionary("-entry", "eABAMeshMotionCoeffs/controller/loops/"
+            foam_dictionary("-entry", "eABAMeshMotionCoeffs/controller/loops/"
                            "%s/terms/%s/%s" % (loop, term, gain), "-set",
                            "gainSweep_%d" % i, self.dict)
-        foamDictionary("-entry", "endTime", "-set", repr(cycles*self.period),
+        foam_dictionary("-entry", "endTime", "-set", repr(cycles*self.period),
                        self.controlDict)
-        foamDictionary("-entry", "functions/stepTimers", "-remove",
+        foam_dictionary("-entry", "functions/stepTimers", "-remove",
                        self.controlDict)
         with open(self.dict) as f:
             self.text = f.read()
@@ -178,7 +178,7 @@ class GainSweep(Sweep):
         return row
 
 
-def worstGrid(rows, grid, pair, value):
+def worst_grid(rows, grid, pair, value):
     """The largest value(row) over any other varying gain, on the pair's
     grid (rows: Y, columns: X); NaN (failed) wins."""
     xs, ys = (sorted(grid[p]) for p in pair)
@@ -213,7 +213,7 @@ def plot(figure, rows, grid, pair, bands):
             ax.set_ylabel(label)
             ax.grid(True, alpha=0.3)
             continue
-        xs, ys, z = worstGrid(rows, grid, pair, value)
+        xs, ys, z = worst_grid(rows, grid, pair, value)
         ax.set_facecolor("k")
         mesh = ax.pcolormesh(edges(xs), edges(ys),
                              np.ma.masked_invalid(np.log10(z)),
@@ -287,9 +287,9 @@ def main(argv=None):
         os.makedirs(args.dir, exist_ok=True)
         template = Template(os.path.abspath(args.case), args.variant,
                             args.deltaT, os.path.abspath(args.dir))
-        grid = parseGrid(args.grid, template.bounds)
-        pair = mapPair(grid, args.map)
-        bands = control_plot.parseBands(args.band, template.terms)
+        grid = parse_grid(args.grid, template.bounds)
+        pair = map_pair(grid, args.map)
+        bands = control_plot.parse_bands(args.band, template.terms)
         end = args.cycles*template.period
         settle = 0.5*end if args.settle is None else args.settle
         if not 0 <= settle < end:
@@ -299,8 +299,8 @@ def main(argv=None):
         sweep = GainSweep(template, os.path.abspath(args.dir), bands, settle,
                           args.keep)
         start = time.time()
-        rows = sweep.runAll(gridPoints(grid), args.np)
-        writeTable(args.o + ".csv", rows, list(grid))
+        rows = sweep.run_all(grid_points(grid), args.np)
+        write_table(args.o + ".csv", rows, list(grid))
         print("gainSweep: %d points (%d cycles, deltaT %g s, %d at a time)"
               " in %.1f s wall, %.2f s per run: %s.csv" % (
                   len(rows), args.cycles, args.deltaT, args.np,

@@ -37,9 +37,9 @@ import sys
 import numpy as np
 
 from flapfoam import flight_data
-from flapfoam.foam_dict import multibodyCoeffs
+from flapfoam.foam_dict import multibody_coeffs
 from flapfoam.pimple_guard import read_run
-from flapfoam.plot_single_wing import referenceValues
+from flapfoam.plot_single_wing import reference_values
 from flapfoam import wing_geometry as geo
 
 SAFETY = 1.25
@@ -80,7 +80,7 @@ def pitching_moment(case, t0, t1):
     """The wing's pitching moment coefficient C_M(t) over [t0, t1]: the
     moment about the centre of mass along the pitch axis Rz(q_2) y, over
     q_ref c_mean (rows: the load of the flow at the previous row's time)."""
-    ref = referenceValues(multibodyCoeffs(
+    ref = reference_values(multibody_coeffs(
         os.path.join(case, "constant", "dynamicMeshDict")))
     jcols, J, bcols, B = flight_data.tables(case)
     bc = {c: i for i, c in enumerate(bcols)}

@@ -46,9 +46,9 @@ import sys
 import numpy as np
 
 from flapfoam.chain_reference import Chain, Harmonic
-from flapfoam.foam_dict import multibodyCoeffs, readState, setEntry
+from flapfoam.foam_dict import multibody_coeffs, read_state, set_entry
 from flapfoam.quasi_steady import SingleWingDrone
-from flapfoam.tables import readTable
+from flapfoam.tables import read_table
 
 SOLVERS = ("Newmark", "symplectic", "CrankNicolson")
 NITERS = ("default", "1", "3")
@@ -136,8 +136,8 @@ def set_up(run):
         os.makedirs(os.path.join(run.path, "0", "uniform"))
         shutil.copy(state, os.path.join(run.path, "0", "uniform"))
     prefix = run.system.coeffs
-    setEntry(mesh_dict, prefix + "solver/type", run.solver)
-    setEntry(mesh_dict, prefix + "nIter",
+    set_entry(mesh_dict, prefix + "solver/type", run.solver)
+    set_entry(mesh_dict, prefix + "nIter",
                     None if run.n_iter == "default" else run.n_iter)
     with open(os.path.join(run.path, "system", "controlDict"), "w") as f:
         f.write(CONTROL % {"end": run.system.end_time, "dt": run.delta_t,
@@ -162,7 +162,7 @@ def chain_of(system):
     """The Lagrangian chain of a pendulum system and its initial q, qDot,
     read from its dictionary and state file."""
     case = os.path.join(project_dir(), system.case)
-    coeffs = multibodyCoeffs(os.path.join(case, "constant",
+    coeffs = multibody_coeffs(os.path.join(case, "constant",
                                           system.dict_name))
     bodies = [b for b in coeffs["bodies"].values() if isinstance(b, dict)]
     lengths = [-float(b["centreOfMass"][-2]) for b in bodies]
@@ -182,7 +182,7 @@ def chain_of(system):
     q0, qDot0 = np.zeros(len(bodies)), np.zeros(len(bodies))
     state = os.path.join(case, "0", "uniform", "rigidBodyMotionState")
     if os.path.isfile(state):
-        s = readState(state)
+        s = read_state(state)
         q0, qDot0 = np.asarray(s["q"], float), np.asarray(s["qDot"], float)
     g = -float(coeffs["g"][-2])
     return Chain(lengths, masses, g=g, prescribed=prescribed), q0, qDot0
@@ -199,7 +199,7 @@ def reference(system):
         chain, q0, qDot0 = chain_of(system)
         q, _ = chain.solve(q0, qDot0, times)
         return times, np.cumsum(q, axis=1)
-    coeffs = multibodyCoeffs(os.path.join(project_dir(), system.case,
+    coeffs = multibody_coeffs(os.path.join(project_dir(), system.case,
                                           "constant", system.dict_name))
     ref = SingleWingDrone(coeffs).fly(system.end_time, system.write)
     return ref[:, 0], ref[:, [1, 2]]
@@ -209,7 +209,7 @@ def observed(system, path):
     """The run's quantities in the reference's columns, from its joints.dat:
     the links' absolute angles (q_j summed along the chain), or the drone's
     x (q_1, its Px joint) and z (q_0, Pz)."""
-    columns, rows = readTable(path)
+    columns, rows = read_table(path)
     q = [columns.index("q_%d" % j) for j in range(len(columns))
          if "q_%d" % j in columns]
     if system.unit == "rad":

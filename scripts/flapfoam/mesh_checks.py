@@ -68,7 +68,7 @@ import numpy as np
 from flapfoam import foam_mesh as fm
 from flapfoam import wing_geometry as geo
 from flapfoam.checks import Checks
-from flapfoam.tables import timeValue
+from flapfoam.tables import time_value
 
 TARGETS = {"coarse": 71e3, "medium": 214e3, "fine": 501e3, "finePlus": 808e3}
 TINY_MAX = 30000
@@ -78,42 +78,42 @@ AREA_TOL = 0.02
 CALCULATED, INTERPOLATED, HOLE = 0, 1, 2
 
 
-def checkCells(pm, level, report, res):
+def check_cells(pm, level, report, res):
     """Cells per zone and in total against the level's target."""
-    nCells = fm.readNCells(os.path.join(pm, "owner"))
-    zones = fm.readZoneSizes(os.path.join(pm, "cellZones"))
-    res.update(nCells=nCells, zones=zones)
-    print("cells: total %d" % nCells + "".join(
-        ", %s %d (%.1f %%)" % (z, n, 100.0*n/nCells)
+    n_cells = fm.read_n_cells(os.path.join(pm, "owner"))
+    zones = fm.read_zone_sizes(os.path.join(pm, "cellZones"))
+    res.update(n_cells=n_cells, zones=zones)
+    print("cells: total %d" % n_cells + "".join(
+        ", %s %d (%.1f %%)" % (z, n, 100.0*n/n_cells)
         for z, n in zones.items()))
     report(set(zones) == {"background", "wing"}
-           and sum(zones.values()) == nCells,
+           and sum(zones.values()) == n_cells,
            "cellZones background + wing cover the mesh (%s)"
            % ", ".join(zones))
     if level == "tiny":
-        report(nCells <= TINY_MAX, "tiny: %d cells <= %d" % (nCells, TINY_MAX))
+        report(n_cells <= TINY_MAX, "tiny: %d cells <= %d" % (n_cells, TINY_MAX))
     elif level in TARGETS:
         tgt = TARGETS[level]
-        err = nCells/tgt - 1
+        err = n_cells/tgt - 1
         res["countError"] = err
         report(abs(err) <= COUNT_TOL, "%s: %d cells, target %d (%+.1f %%, "
-               "tolerance %.0f %%)" % (level, nCells, tgt, 100*err,
+               "tolerance %.0f %%)" % (level, n_cells, tgt, 100*err,
                                        100*COUNT_TOL))
 
 
-def checkWingArea(pm, bnd, gen, report, res):
+def check_wing_area(pm, bnd, gen, report, res):
     """The wing patch's area against the analytic one, and its breakdown
     in the wing frame (pose of gen, meshGen.json)."""
-    pts = fm.readPoints(os.path.join(pm, "points"))
-    offs, verts = fm.readFaces(os.path.join(pm, "faces"))
+    pts = fm.read_points(os.path.join(pm, "points"))
+    offs, verts = fm.read_faces(os.path.join(pm, "faces"))
     w = bnd["wing"]
     faces = np.arange(w["startFace"], w["startFace"] + w["nFaces"])
-    Sf = fm.faceAreasVec(pts, offs, verts, faces)
+    Sf = fm.face_areas_vec(pts, offs, verts, faces)
     magSf = np.linalg.norm(Sf, axis=1)
     area = float(magSf.sum())
-    exact = geo.wingArea()
+    exact = geo.wing_area()
     err = area/exact - 1
-    res.update(wingArea=area, wingAreaAnalytic=exact, wingAreaError=err,
+    res.update(wing_area=area, wingAreaAnalytic=exact, wingAreaError=err,
                wingFaces=int(w["nFaces"]))
     report(abs(err) <= AREA_TOL,
            "wing patch area %.6e m^2, analytic %.6e m^2 (%+.3f %%, "
@@ -125,11 +125,11 @@ def checkWingArea(pm, bnd, gen, report, res):
     if os.path.exists(gen):
         with open(gen) as fh:
             pose = json.load(fh).get("pose", {})
-    Rpose = geo.poseMatrix(pose.get("phiDeg", 0.0), pose.get("alphaDeg", 0.0))
+    Rpose = geo.pose_matrix(pose.get("phiDeg", 0.0), pose.get("alphaDeg", 0.0))
     nz = np.abs((Sf @ Rpose)[:, 2])/magSf      # |n . z_wing|
     flat = float(magSf[nz > 0.5].sum())
     band = area - flat
-    flatExact = 2*geo.planformArea()
+    flatExact = 2*geo.planform_area()
     bandExact = exact - flatExact
     res.update(topBottomArea=flat, topBottomAnalytic=flatExact,
                edgeArea=band, edgeAnalytic=bandExact)
@@ -139,7 +139,7 @@ def checkWingArea(pm, bnd, gen, report, res):
               100*(band/bandExact - 1)))
 
 
-def meshCheck(argv=None):
+def mesh_check(argv=None):
     """scripts/meshCheck.py: the mesh checks (see the module's doc)."""
     ap = argparse.ArgumentParser()
     ap.add_argument("-case", default=".")
@@ -158,22 +158,22 @@ def meshCheck(argv=None):
     report = Checks()
     res = {"level": level}
 
-    checkCells(pm, level, report, res)
-    bnd = fm.readBoundary(os.path.join(pm, "boundary"))
+    check_cells(pm, level, report, res)
+    bnd = fm.read_boundary(os.path.join(pm, "boundary"))
     expect = {"wing": "wall", "oversetPatch": "overset", "farField": "patch"}
     report(all(bnd.get(p, {}).get("type") == t for p, t in expect.items())
            and set(bnd) == set(expect),
            "patches %s" % ", ".join("%s(%s)" % (p, d["type"])
                                      for p, d in bnd.items()))
 
-    checkWingArea(pm, bnd, gen, report, res)
+    check_wing_area(pm, bnd, gen, report, res)
     return report.finish(args.json, res)
 
 
 # --------------------------------------------------------------------------
 # The orphan check
 
-def cellCentresApprox(points, mesh, nCells):
+def cell_centres_approx(points, mesh, n_cells):
     """Cell centres as the average of the face centres (good enough to
     measure distances of cells to the wing); mesh: the faces (offs, verts)
     and their owner and neighbour."""
@@ -185,8 +185,8 @@ def cellCentresApprox(points, mesh, nCells):
         sel = np.where(sizes == n)[0]
         idx = offs[sel][:, None] + np.arange(n)[None, :]
         fc[sel] = points[verts[idx]].mean(axis=1)
-    acc = np.zeros((nCells, 3))
-    cnt = np.zeros(nCells)
+    acc = np.zeros((n_cells, 3))
+    cnt = np.zeros(n_cells)
     np.add.at(acc, owner, fc)
     np.add.at(cnt, owner, 1)
     nInt = len(neighbour)
@@ -195,7 +195,7 @@ def cellCentresApprox(points, mesh, nCells):
     return acc/cnt[:, None], fc
 
 
-def rigidFit(X, Y):
+def rigid_fit(X, Y):
     """R, T minimising |R X + T - Y| (Kabsch), X, Y: (n, 3)."""
     cx, cy = X.mean(axis=0), Y.mean(axis=0)
     H = (X - cx).T @ (Y - cy)
@@ -205,10 +205,10 @@ def rigidFit(X, Y):
     return R, cy - R @ cx
 
 
-def planformDistance(p):
+def planform_distance(p):
     """Distance of points p (m, 2) to the plate's planform (0 inside)."""
     tau = np.linspace(0.0, np.pi, 4001)
-    poly = np.concatenate([geo.edgePoint(tau), geo.edgePoint([0.0])])
+    poly = np.concatenate([geo.edge_point(tau), geo.edge_point([0.0])])
     a, b = poly[:-1], poly[1:]
     ab = b - a
     ap = p[:, None, :] - a[None, :, :]
@@ -219,21 +219,21 @@ def planformDistance(p):
     return np.where(inside, 0.0, dist)
 
 
-def meshAt(case, time):
+def mesh_at(case, time):
     """polyMesh of a time (moving mesh: points in <time>/polyMesh)."""
     pm = os.path.join(case, "constant", "polyMesh")
     tp = os.path.join(case, time, "polyMesh", "points")
-    pts = fm.readPoints(tp if (os.path.exists(tp) or os.path.exists(tp + ".gz"))
+    pts = fm.read_points(tp if (os.path.exists(tp) or os.path.exists(tp + ".gz"))
                         else os.path.join(pm, "points"))
     return pts
 
 
-def writtenTimes(case):
+def written_times(case):
     """The time folders > 0 holding cellTypes, in order."""
     times = []
     for d in glob.glob(os.path.join(case, "[0-9]*")):
         name = os.path.basename(d)
-        if timeValue(name, 0.0) > 0 and (
+        if time_value(name, 0.0) > 0 and (
                 glob.glob(os.path.join(d, "cellTypes*"))):
             times.append(name)
     times.sort(key=float)
@@ -250,39 +250,39 @@ class MeshAddressing:
     pts0: object
     owner: object
     neighbour: object
-    nCells: int
+    n_cells: int
     wingPoints: object
     ovCells: object
 
 
-def meshAddressing(case):
+def mesh_addressing(case):
     """Faces, cells and patches of the case's polyMesh, the points as
     generated, the wing patch's points and the overset patch's cells."""
     pm = os.path.join(case, "constant", "polyMesh")
-    offs, verts = fm.readFaces(os.path.join(pm, "faces"))
+    offs, verts = fm.read_faces(os.path.join(pm, "faces"))
     # the mesh as generated (pose of meshGen.json): points0 when the mesh was
     # moved to the start state of the motion (eABAInitialMesh)
     p0 = os.path.join(pm, "points0")
-    pts0 = fm.readPoints(p0 if (os.path.exists(p0) or os.path.exists(p0 + ".gz"))
+    pts0 = fm.read_points(p0 if (os.path.exists(p0) or os.path.exists(p0 + ".gz"))
                          else os.path.join(pm, "points"))
-    owner = fm.readLabels(os.path.join(pm, "owner"))
-    neighbour = fm.readLabels(os.path.join(pm, "neighbour"))
-    nCells = fm.readNCells(os.path.join(pm, "owner"))
-    bnd = fm.readBoundary(os.path.join(pm, "boundary"))
+    owner = fm.read_labels(os.path.join(pm, "owner"))
+    neighbour = fm.read_labels(os.path.join(pm, "neighbour"))
+    n_cells = fm.read_n_cells(os.path.join(pm, "owner"))
+    bnd = fm.read_boundary(os.path.join(pm, "boundary"))
     w, o = bnd["wing"], bnd["oversetPatch"]
     wingFaces = np.arange(w["startFace"], w["startFace"] + w["nFaces"])
     wingPoints = np.unique(np.concatenate(
         [verts[offs[f]:offs[f + 1]] for f in wingFaces]))
     ovCells = np.unique(owner[o["startFace"]:o["startFace"] + o["nFaces"]])
-    return MeshAddressing(offs, verts, pts0, owner, neighbour, nCells,
+    return MeshAddressing(offs, verts, pts0, owner, neighbour, n_cells,
                           wingPoints, ovCells)
 
 
-def holeClearance(x0, margin, h):
+def hole_clearance(x0, margin, h):
     """Background holes x0 (the component's frame at phi = alpha = 0):
     how many lie outside the component, their smallest clearance to its
     boundary and the farthest from the plate (in h)."""
-    dPlan = planformDistance(x0[:, :2])
+    dPlan = planform_distance(x0[:, :2])
     zClear = 0.5*geo.THICKNESS + margin - np.abs(x0[:, 2])
     clear = np.minimum(margin - dPlan, zClear)
     outside = int(np.sum(clear < 0))
@@ -292,21 +292,21 @@ def holeClearance(x0, margin, h):
     return outside, clearance, float(dWall.max())/h
 
 
-def checkTime(case, t, m, gen):
+def check_time(case, t, m, gen):
     """The cell types and orphans of one written time: the results."""
     h = gen["background"]["h"]
     margin = gen["component"]["margin"]
-    Rgen = geo.poseMatrix(gen["pose"]["phiDeg"], gen["pose"]["alphaDeg"])
-    nCells = m.nCells
-    types = np.rint(fm.readScalarField(
+    Rgen = geo.pose_matrix(gen["pose"]["phiDeg"], gen["pose"]["alphaDeg"])
+    n_cells = m.n_cells
+    types = np.rint(fm.read_scalar_field(
         os.path.join(case, t, "cellTypes"))).astype(int)
-    zone = np.rint(fm.readScalarField(
+    zone = np.rint(fm.read_scalar_field(
         os.path.join(case, t, "zoneID"))).astype(int)
-    if np.isscalar(types) or len(types) != nCells:
-        types = np.full(nCells, int(types)) if np.isscalar(types) \
+    if np.isscalar(types) or len(types) != n_cells:
+        types = np.full(n_cells, int(types)) if np.isscalar(types) \
             else types
-    pts = meshAt(case, t)
-    cc, fc = cellCentresApprox(pts, m, nCells)
+    pts = mesh_at(case, t)
+    cc, fc = cell_centres_approx(pts, m, n_cells)
 
     res = {"time": t}
     for z, name in ((0, "background"), (1, "wing")):
@@ -318,13 +318,13 @@ def checkTime(case, t, m, gen):
     ovNotInterp = int(np.sum(types[m.ovCells] != INTERPOLATED))
 
     # background holes in the component's frame at phi = alpha = 0
-    R, T = rigidFit(m.pts0[m.wingPoints], pts[m.wingPoints])
+    R, T = rigid_fit(m.pts0[m.wingPoints], pts[m.wingPoints])
     bgHoles = np.where((zone == 0) & (types == HOLE))[0]
     outside = 0
     clearance = dmax = float("nan")
     if len(bgHoles):
         x0 = ((cc[bgHoles] - T) @ R) @ Rgen   # R^T, then Rgen^T
-        outside, clearance, dmax = holeClearance(x0, margin, h)
+        outside, clearance, dmax = hole_clearance(x0, margin, h)
     res.update(wingOrphans=wingOrphans, backgroundOrphans=outside,
                oversetAcceptorsNotInterpolated=ovNotInterp,
                minHoleClearance_h=clearance, maxHoleDistance_h=dmax,
@@ -332,7 +332,7 @@ def checkTime(case, t, m, gen):
     return res
 
 
-def oversetCheck(argv=None):
+def overset_check(argv=None):
     """scripts/oversetCheck.py: the orphan check (see the module's doc)."""
     ap = argparse.ArgumentParser()
     ap.add_argument("-case", default=".")
@@ -343,16 +343,16 @@ def oversetCheck(argv=None):
     case = args.case
     with open(os.path.join(case, "mesh", "meshGen.json")) as fh:
         gen = json.load(fh)
-    times = writtenTimes(case) if args.time is None else args.time
+    times = written_times(case) if args.time is None else args.time
     if not times:
         print("FAIL no time directory with cellTypes in %s" % case)
         return 1
-    m = meshAddressing(case)
+    m = mesh_addressing(case)
 
     report = Checks()
     results = []
     for t in times:
-        res = checkTime(case, t, m, gen)
+        res = check_time(case, t, m, gen)
         results.append(res)
         report(res["wingOrphans"] == 0 and res["backgroundOrphans"] == 0
                and res["oversetAcceptorsNotInterpolated"] == 0,

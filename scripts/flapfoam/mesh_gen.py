@@ -20,13 +20,13 @@ import os
 import sys
 from dataclasses import dataclass
 
-from flapfoam.background_mesh import BACKGROUND, backgroundMesh, topoSetRefine
-from flapfoam.block_mesh import writeCase
-from flapfoam.wing_mesh import (LEVELS, checkBlockSides, levelComponent,
-                               sweptEnvelope, wingComponent)
+from flapfoam.background_mesh import BACKGROUND, background_block_mesh, topo_set_refine
+from flapfoam.block_mesh import write_case
+from flapfoam.wing_mesh import (LEVELS, check_block_sides, level_component,
+                               swept_envelope, wing_component)
 
 
-def parseArgs(doc, levels, argv=None):
+def parse_args(doc, levels, argv=None):
     """meshGen.py <level> [-o DIR] [-phi DEG] [-alpha DEG] | -list |
     -levels (the level names, one a line: Allrun's -level checks)"""
     ap = argparse.ArgumentParser(description=doc.split("\n\n")[0])
@@ -79,24 +79,24 @@ def build(level, component, pose=(0.0, 0.0), tilts=(0.0,)):
     level, the background refined around the volume the component sweeps
     (with the stroke plane pitched by each angle of tilts)."""
     lev = LEVELS[level]
-    comp = levelComponent(component, lev)
-    wbm, winfo = wingComponent(lev, comp, pose)
-    checkBlockSides(wbm)
-    bbm, binfo = backgroundMesh(lev, BACKGROUND,
-                                sweptEnvelope(comp, BACKGROUND, tilts))
+    comp = level_component(component, lev)
+    wbm, winfo = wing_component(lev, comp, pose)
+    check_block_sides(wbm)
+    bbm, binfo = background_block_mesh(lev, BACKGROUND,
+                                swept_envelope(comp, BACKGROUND, tilts))
     return LevelMeshes(lev, comp, wbm, winfo, bbm, binfo)
 
 
-def writeWingAndBackground(out, hdr, drone, m, extraActions=None):
+def write_wing_and_background(out, hdr, drone, m, extraActions=None):
     """<out>/wing and <out>/background with the topoSetDict.refine<i> of
     the background (plus extraActions(i, region) in each)."""
-    writeCase(os.path.join(out, "wing"), m.wbm,
+    write_case(os.path.join(out, "wing"), m.wbm,
               hdr + "// %s: wing component (O-type, overset)\n\n" % drone)
     extra = {"topoSetDict.refine%d" % (j + 1):
-             topoSetRefine(r, BACKGROUND["centre"],
+             topo_set_refine(r, BACKGROUND["centre"],
                            extraActions(j, r) if extraActions else ())
              for j, r in enumerate(m.binfo["regions"])}
-    writeCase(os.path.join(out, "background"), m.bbm,
+    write_case(os.path.join(out, "background"), m.bbm,
               hdr + "// %s: background cube\n\n" % drone, extra)
 
 

@@ -38,7 +38,7 @@ def median_columns(case, startup):
         len(data)
 
 
-def readRows(folder, runs, startup):
+def read_rows(folder, runs, startup):
     """One row per configuration (level, ranks, stencil or stencil+settings:
     the run's name level-np<N>-<configuration>-r<round>): the medians over
     the rounds of the per-run medians, the overset range, peak memory."""
@@ -207,7 +207,7 @@ def main():
     parser.add_argument("runs", nargs="+")
     args = parser.parse_args()
 
-    rows = readRows(args.dir, args.runs, args.startup)
+    rows = read_rows(args.dir, args.runs, args.startup)
     lines = table(rows, args.startup)
     with open(args.o + ".md", "w") as f:
         f.write("\n".join(lines) + "\n")

@@ -45,8 +45,8 @@ from flapfoam import flight_data
 from flapfoam import solver_log
 from flapfoam import step_timers
 from flapfoam.checks import report
-from flapfoam.foam_dict import multibodyCoeffs
-from flapfoam.plot_single_wing import coefficients, referenceValues
+from flapfoam.foam_dict import multibody_coeffs
+from flapfoam.plot_single_wing import coefficients, reference_values
 
 # The guard's margins (issue 25)
 MEAN_TOL = 0.01         # cycle means, of the larger mean magnitude
@@ -85,7 +85,7 @@ class Cycles:
 
 def read_run(case, n_cycles):
     """The run's Cycles over its first n_cycles cycles."""
-    ref = referenceValues(multibodyCoeffs(
+    ref = reference_values(multibody_coeffs(
         os.path.join(case, "constant", "dynamicMeshDict")))
     jcols, J, bcols, B = flight_data.tables(case)
     jc = {c: i for i, c in enumerate(jcols)}

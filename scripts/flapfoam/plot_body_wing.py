@@ -37,10 +37,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from flapfoam import flight_data
-from flapfoam.foam_dict import multibodyCoeffs
-from flapfoam.plotting import (cycleAxes, path, plt, save, shadeDownstrokes,
-                               stepTimers)
-from flapfoam.wang import wangJoints
+from flapfoam.foam_dict import multibody_coeffs
+from flapfoam.plotting import (cycle_axes, path, plt, save, shade_downstrokes,
+                               step_timers_chart)
+from flapfoam.wang import wang_joints
 
 
 @dataclass
@@ -57,11 +57,11 @@ class Run:
     tf: object
 
 
-def readRun(case):
+def read_run(case):
     """The run's flight data and Wang joints."""
     attrs, d = flight_data.load(case)
     t = d["time"]
-    wang = wangJoints(multibodyCoeffs(os.path.join(case, "constant",
+    wang = wang_joints(multibody_coeffs(os.path.join(case, "constant",
                                                    "dynamicMeshDict")))
     f = wang[3].frequency if 3 in wang else 20.0
     return Run(attrs, d, t, d["joints/q"], d["joints/qDot"], wang, f, f*t)
@@ -78,7 +78,7 @@ def trajectory(r, out):
     return c
 
 
-def bodyPitch(r, out):
+def body_pitch(r, out):
     """(b) body pitch."""
     q, tf = r.q, r.tf
     fig, ax = plt.subplots(figsize=(8, 4))
@@ -96,26 +96,26 @@ def coefficients(r, out):
     tl = tf[:-1]
     downstroke = qDot[:-1, 3] if q.shape[1] > 3 else np.zeros_like(tl)
     fig, ax = plt.subplots(figsize=(8, 4.5))
-    shadeDownstrokes(ax, tl, downstroke)
+    shade_downstrokes(ax, tl, downstroke)
     for body in ("wing", "body"):
         C = d["coefficients/" + body][1:]
         ax.plot(tl, C[:, 0], label="%s C_xI" % body)
         ax.plot(tl, C[:, 1], label="%s C_zI" % body)
-    cycleAxes(ax, "C = F / (0.5 rho S U_ref^2)",
+    cycle_axes(ax, "C = F / (0.5 rho S U_ref^2)",
               "Force coefficients (global frame)")
     ax.legend(fontsize=8)
     save(fig, out, "forceCoefficients.png")
 
     Cm = d["coefficients/wing"][1:, 2]
     fig, ax = plt.subplots(figsize=(8, 4))
-    shadeDownstrokes(ax, tl, downstroke)
+    shade_downstrokes(ax, tl, downstroke)
     ax.plot(tl, Cm)
-    cycleAxes(ax, "C_m (wing, about the body's centre of mass)",
+    cycle_axes(ax, "C_m (wing, about the body's centre of mass)",
               "Wing pitching moment")
     save(fig, out, "wingPitchingMoment.png")
 
 
-def prescribedJoints(r, out):
+def prescribed_joints(r, out):
     """(e) prescribed joints; the largest error over the amplitude."""
     t, q, tf, wang = r.t, r.q, r.tf, r.wang
     worst = 0.0
@@ -151,14 +151,14 @@ def main():
     if flight_data.find(a.case) is None:
         sys.exit("plotRun: no postProcessing/flightData/*/flightData.h5 in %s"
                  % a.case)
-    r = readRun(a.case)
+    r = read_run(a.case)
     c = trajectory(r, out)
-    bodyPitch(r, out)
+    body_pitch(r, out)
     coefficients(r, out)
-    worst = prescribedJoints(r, out)
+    worst = prescribed_joints(r, out)
 
     # (f) step timers
-    rc = stepTimers(a.case, out, r.attrs.get("case", ""))
+    rc = step_timers_chart(a.case, out, r.attrs.get("case", ""))
     if rc != 0:
         return rc
 

@@ -59,10 +59,10 @@ import numpy as np
 
 from flapfoam import flight_data
 from flapfoam import wing_geometry as geo
-from flapfoam.foam_dict import multibodyCoeffs
-from flapfoam.plotting import path, plt, save, shadeDownstrokes, stepTimers
-from flapfoam.tables import joinedTable, startFolders
-from flapfoam.wang import imposedJoints
+from flapfoam.foam_dict import multibody_coeffs
+from flapfoam.plotting import path, plt, save, shade_downstrokes, step_timers_chart
+from flapfoam.tables import joined_table, start_folders
+from flapfoam.wang import imposed_joints
 
 
 @dataclass
@@ -105,23 +105,23 @@ class Run:
         return self.ref.qref
 
 
-def referenceValues(coeffs):
+def reference_values(coeffs):
     """The prescribed joints, f, U_ref and the dynamic pressure times area
     of the multibody coefficients (the module's docstring)."""
-    joints = imposedJoints(coeffs)
+    joints = imposed_joints(coeffs)
     rho = float(coeffs.get("rhoInf", ["1.2"])[0])
     flap = joints.get(2)
     f = flap.frequency if flap else 20.0
     Aphi = flap.amplitude if flap else 75.0*math.pi/180.0
-    Uref = 4.0*f*Aphi*geo.radiusOfGyration()
+    Uref = 4.0*f*Aphi*geo.radius_of_gyration()
     return Reference(joints, rho, f, Uref,
-                     0.5*rho*geo.planformArea()*Uref**2)
+                     0.5*rho*geo.planform_area()*Uref**2)
 
 
-def readRun(case, dictPath):
+def read_run(case, dictPath):
     """The run's tables, prescribed joints and reference values; prints
     them."""
-    ref = referenceValues(multibodyCoeffs(dictPath))
+    ref = reference_values(multibody_coeffs(dictPath))
 
     base = os.path.join(case, "postProcessing", "eABAMeshMotion")
     tables = flight_data.tables(case)
@@ -130,11 +130,11 @@ def readRun(case, dictPath):
         source = "flightData.h5"
         print("plotRun: reading %s" % flight_data.find(case))
     else:
-        if not startFolders(base):
+        if not start_folders(base):
             sys.exit("plotRun: no %s/<time>/joints.dat and no flightData.h5"
                      % base)
-        jcols, J = joinedTable(base, "joints.dat", keepEarlierAtStart=False)
-        bcols, B = joinedTable(base, "bodies.dat", keepEarlierAtStart=True)
+        jcols, J = joined_table(base, "joints.dat", keepEarlierAtStart=False)
+        bcols, B = joined_table(base, "bodies.dat", keepEarlierAtStart=True)
         source = "joints.dat: 12 digits"
     jc = {c: i for i, c in enumerate(jcols)}
     bc = {c: i for i, c in enumerate(bcols)}
@@ -142,11 +142,11 @@ def readRun(case, dictPath):
 
     print("plotRun: %d steps, t = %.6g ... %.6g s (%.3f cycles), %d restart "
           "folder(s)" % (len(t) - 1, t[0], t[-1], (t[-1] - t[0])*ref.f,
-                         max(len(startFolders(base)) - 1, 0)))
+                         max(len(start_folders(base)) - 1, 0)))
     print("plotRun: S = %.6g m^2, R2 = %.6g m (about the flapping axis; "
           "quadrature %.6g), U_ref = 4 f A_phi R2 = %.6g m/s, rho = %g"
-          % (geo.planformArea(), geo.radiusOfGyration(),
-             geo.radiusOfGyrationQuadrature(), ref.Uref, ref.rho))
+          % (geo.planform_area(), geo.radius_of_gyration(),
+             geo.radius_of_gyration_quadrature(), ref.Uref, ref.rho))
     return Run(J, B, jc, bc, t, source, ref)
 
 
@@ -169,7 +169,7 @@ def coefficients(B, bc, qref):
     return (B[:-1, 0], B[1:, bc["wing:Fx"]]/qref, B[1:, bc["wing:Fz"]]/qref)
 
 
-def forceCoefficients(r, out):
+def force_coefficients(r, out):
     """(b) wing force coefficients: the row of t_k holds the load of the
     flow at t_{k-1}."""
     J, jc, B, bc, t = r.J, r.jc, r.B, r.bc, r.t
@@ -181,7 +181,7 @@ def forceCoefficients(r, out):
     qDot2 = np.interp(tF, t, J[:, jc["qDot_2"]]) if "qDot_2" in jc \
         else np.zeros_like(tF)
     fig, ax = plt.subplots(figsize=(8, 4.5))
-    shadeDownstrokes(ax, f*tF, qDot2)
+    shade_downstrokes(ax, f*tF, qDot2)
     ax.plot(f*tF, Cx, label="C_xI")
     ax.plot(f*tF, Cz, label="C_zI")
     ax.axhline(0, color="k", lw=0.5)
@@ -220,7 +220,7 @@ def forceCoefficients(r, out):
     print("plotRun: last C_xI = %.6g, C_zI = %.6g" % (Cx[-1], Cz[-1]))
 
 
-def prescribedJoints(r, out):
+def prescribed_joints(r, out):
     """(c) prescribed joints against the analytic motion."""
     J, jc, t, f, joints, source = r.J, r.jc, r.t, r.f, r.joints, r.source
     if not joints:
@@ -269,14 +269,14 @@ def main():
     case = args.case
     out = args.output or os.path.join(case, "plots")
     os.makedirs(out, exist_ok=True)
-    r = readRun(case, args.dict or os.path.join(case, "constant",
+    r = read_run(case, args.dict or os.path.join(case, "constant",
                                                 "dynamicMeshDict"))
     trajectory(r, out)
-    forceCoefficients(r, out)
-    prescribedJoints(r, out)
+    force_coefficients(r, out)
+    prescribed_joints(r, out)
 
     # (d) step timers
-    rc = stepTimers(case, out, os.path.basename(os.path.abspath(case)))
+    rc = step_timers_chart(case, out, os.path.basename(os.path.abspath(case)))
     if rc != 0:
         print("plotRun: the step-timer chart failed (exit %d)" % rc)
         return rc

@@ -41,7 +41,7 @@ def path(x, z, t, labels, **line):
     return fig
 
 
-def cycleAxes(ax, ylabel, title):
+def cycle_axes(ax, ylabel, title):
     """The zero line, the labels against t f and the grid of a plot over
     the cycles."""
     ax.axhline(0, color="k", lw=0.5)
@@ -51,7 +51,7 @@ def cycleAxes(ax, ylabel, title):
     ax.grid(True, alpha=0.3)
 
 
-def shadeDownstrokes(ax, t, qDot):
+def shade_downstrokes(ax, t, qDot):
     """Shade the intervals where phi decreases (qDot < 0)."""
     down = qDot < 0
     if not down.any():
@@ -66,7 +66,7 @@ def shadeDownstrokes(ax, t, qDot):
             first = False
 
 
-def stepTimers(case, out, label):
+def step_timers_chart(case, out, label):
     """stepTimers.png of the run's postProcessing/stepTimers (if any), the
     chart of flapfoam.plot_step_timers; 0, or 1 if it has no steps."""
     timers = os.path.join(case, "postProcessing", "stepTimers")

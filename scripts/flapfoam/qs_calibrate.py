@@ -45,7 +45,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from flapfoam.flight_data import find
-from flapfoam.foam_dict import multibodyCoeffs
+from flapfoam.foam_dict import multibody_coeffs
 from flapfoam.quasi_steady import Wing, vec
 
 COEFFS = ("CL", "CD0", "CD1")
@@ -55,13 +55,13 @@ def fail(message):
     sys.exit("qsCalibrate: " + message)
 
 
-def wingEntry(path, name):
+def wing_entry(path, name):
     """(name, entry, multibody coefficients) of the dictionary's
     aerodynamics entry NAME (None: its only one)."""
     if not os.path.isfile(path):
         fail("no dictionary %s (give -dict DICT: a dynamicMeshDict with an"
              " aerodynamics entry)" % path)
-    coeffs = multibodyCoeffs(path)
+    coeffs = multibody_coeffs(path)
     aero = coeffs.get("aerodynamics")
     entries = {k: v for k, v in aero.items() if isinstance(v, dict)} \
         if isinstance(aero, dict) else {}
@@ -139,7 +139,7 @@ class FlightRows:
                  % (self.path, len(bad), t[self.rows[bad[0]]]))
 
 
-def basisForces(wing, rows):
+def basis_forces(wing, rows):
     """(rows, 3 coefficients, 3 components): the wing's force per unit
     CL, CD0, CD1 at every row."""
     unit = copy.copy(wing)
@@ -188,7 +188,7 @@ def quality(model, rows, components):
     return out
 
 
-def cycleRows(rows, coeffs):
+def cycle_rows(rows, coeffs):
     """(rows of the whole flapping cycles at the end of the fitted ones,
     text): all of them when they cover less than one cycle (or no
     frequency)."""
@@ -208,7 +208,7 @@ def cycleRows(rows, coeffs):
     return keep, "over the last %d whole cycle(s) of %g s" % (cycles, period)
 
 
-def entryText(name, entry, values):
+def entry_text(name, entry, values):
     """The aerodynamics entry NAME with the fitted coefficients."""
     lines = ["    %s" % name, "    {"]
     keys = list(entry) + [k for k in COEFFS if k not in entry]
@@ -239,13 +239,13 @@ def report(wing, rows, axes):
     text."""
     entry, coeffs = wing.entry, wing.coeffs
     components = ["xyz".index(c) for c in axes]
-    basis = basisForces(Wing(entry), rows)
+    basis = basis_forces(Wing(entry), rows)
     fitted, cond = fit(basis, rows, components)
     defaults = Wing({k: v for k, v in entry.items() if k not in COEFFS})
     wang = np.array([defaults.CL, defaults.CD0, defaults.CD1])
-    keep, over = cycleRows(rows, coeffs)
+    keep, over = cycle_rows(rows, coeffs)
 
-    def meanZ(F):
+    def mean_z(F):
         return np.average(F[keep, 2], weights=rows.step[keep])
 
     print("qsCalibrate: %s, body %s, %d rows t = %g to %g s, components %s"
@@ -259,16 +259,16 @@ def report(wing, rows, axes):
               " likely dominated by what the QS model lacks (added mass,"
               " rotational forces, the start-up): fit over whole cycles"
               % ", ".join(negative))
-    print("mean F_z %s: run %.6g N" % (over, meanZ(rows.force)))
+    print("mean F_z %s: run %.6g N" % (over, mean_z(rows.force)))
     for label, x in (("fitted", fitted), ("Wang's defaults", wang)):
         model = np.einsum("j,ijk->ik", x, basis)
         fitText = "; ".join("%s: R^2 %.6f, RMS residual %.3g of the range"
                             % (axes[i], r2, rms) for i, (r2, rms)
                             in enumerate(quality(model, rows, components)))
         print("QS %s (CL %.4g CD0 %.4g CD1 %.4g): %s; mean F_z %.6g N ="
-              " %.4f of the run's" % (label, *x, fitText, meanZ(model),
-                                       meanZ(model)/meanZ(rows.force)))
-    text = entryText(wing.name, entry, fitted)
+              " %.4f of the run's" % (label, *x, fitText, mean_z(model),
+                                       mean_z(model)/mean_z(rows.force)))
+    text = entry_text(wing.name, entry, fitted)
     print("The entry to paste (aerodynamics of %s):\n%s" % (wing.path, text))
     return text
 
@@ -287,7 +287,7 @@ def main():
     args = parser.parse_args()
     args.dict = args.dict or os.path.join(args.case, "constant",
                                           "dynamicMeshDict")
-    name, entry, coeffs = wingEntry(args.dict, args.wing)
+    name, entry, coeffs = wing_entry(args.dict, args.wing)
     body = entry.get("body", ["?"])[0]
     if body not in coeffs.get("bodies", {}):
         fail("%s: aerodynamics/%s: body %s is not a body of the tree"

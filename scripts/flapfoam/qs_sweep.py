@@ -60,7 +60,7 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
-from flapfoam.foam_dict import readFoamDict, setEntry
+from flapfoam.foam_dict import read_foam_dict, set_entry
 
 # name: (imposedMotion waveform or None, key, allowed (lo, hi) open range)
 PARAMETERS = {
@@ -85,7 +85,7 @@ class SweepError(Exception):
     allowed."""
 
 
-def parseValues(name, spec, bounds):
+def parse_values(name, spec, bounds):
     """The values of one grid entry NAME=SPEC, each in the open range
     bounds (lo, hi)."""
     try:
@@ -108,7 +108,7 @@ def parseValues(name, spec, bounds):
     return values
 
 
-def parseGrid(text, bounds=None):
+def parse_grid(text, bounds=None):
     """{name: [values]} of -grid "NAME=SPEC ..." (order kept); bounds:
     {NAME: (lo, hi)} of the allowed names (default: PARAMETERS')."""
     bounds = bounds or {n: p[2] for n, p in PARAMETERS.items()}
@@ -120,7 +120,7 @@ def parseGrid(text, bounds=None):
                              " of: %s)" % (word, ", ".join(bounds)))
         if name in grid:
             raise SweepError("-grid: %s given twice" % name)
-        grid[name] = parseValues(name, spec, bounds[name])
+        grid[name] = parse_values(name, spec, bounds[name])
     if not grid:
         raise SweepError("-grid '%s': not allowed (at least one NAME=SPEC)"
                          % text)
@@ -136,7 +136,7 @@ class Model:
                  massBody=None):
         if not os.path.isfile(path):
             raise SweepError("-dict %s: no such file" % path)
-        d = readFoamDict(path)
+        d = read_foam_dict(path)
         self.prefix = "eABAMeshMotionCoeffs/" \
             if "eABAMeshMotionCoeffs" in d else ""
         coeffs = d.get("eABAMeshMotionCoeffs", d)
@@ -199,7 +199,7 @@ class Model:
         return values
 
     def _set(self, entry, value):
-        setEntry(self.template, self.prefix + entry, value)
+        set_entry(self.template, self.prefix + entry, value)
 
     def write(self, path, values):
         """The dictionary of one point (values: {name: value}, the
@@ -223,7 +223,7 @@ timeFormat general; timePrecision 12;
 """
 
 
-def jointMap(log):
+def joint_map(log):
     """(heave, surge): the q indices of the first free Pz and Px joints in
     rigidBodySimulate's joint state map."""
     free = {}
@@ -233,7 +233,7 @@ def jointMap(log):
     return free.get("Pz"), free.get("Px")
 
 
-def pointResults(data, names, heave, surge, g):
+def point_results(data, names, heave, surge, g):
     """The sweep's results of one run's joints.dat (data, column names)."""
     col = {n: i for i, n in enumerate(names)}
     t = data[:, 0]
@@ -287,7 +287,7 @@ class Sweep:
         seconds = time.time() - start
         with open(os.path.join(case, "log")) as log:
             text = log.read()
-        heave, surge = jointMap(text)
+        heave, surge = joint_map(text)
         if rc != 0 or heave is None or surge is None:
             raise SweepError("point %s %s: rigidBodySimulate exit %d%s; see"
                              " %s/log" % (name, values, rc, "" if rc else
@@ -297,14 +297,14 @@ class Sweep:
                               "0", "joints.dat")
         with open(joints) as j:
             names = j.readline().split()[1:]
-        row = pointResults(np.loadtxt(joints, ndmin=2), names, heave, surge,
+        row = point_results(np.loadtxt(joints, ndmin=2), names, heave, surge,
                            self.model.g)
         row["seconds"] = seconds
         if not self.keep:
             shutil.rmtree(case)
         return row
 
-    def runAll(self, points, nProcs):
+    def run_all(self, points, nProcs):
         """The rows (values and results) of a list of points, nProcs runs
         at a time."""
         def one(item):
@@ -317,7 +317,7 @@ class Sweep:
             return list(pool.map(one, enumerate(points)))
 
 
-def gridPoints(grid):
+def grid_points(grid):
     """[{name: value}] of every combination, the last name fastest."""
     names = list(grid)
     return [dict(zip(names, v)) for v in itertools.product(*grid.values())]
@@ -370,21 +370,21 @@ class Hover:
     def table(self, rows, nProcs):
         """The hover rows of every combination of the other parameters."""
         others = [n for n in self.grid if n != self.param]
-        combos = gridPoints({n: self.grid[n] for n in others})
+        combos = grid_points({n: self.grid[n] for n in others})
 
-        def rowsOf(c):
+        def rows_of(c):
             return sorted((r for r in rows
                            if all(r[k] == c[k] for k in others)),
                           key=lambda r: r[self.param])
 
         with ThreadPoolExecutor(max_workers=nProcs) as pool:
             return list(pool.map(
-                lambda ic: self.find(ic[1], rowsOf(ic[1]),
+                lambda ic: self.find(ic[1], rows_of(ic[1]),
                                      "hover%03d" % ic[0]),
                 enumerate(combos)))
 
 
-def writeTable(path, rows, first):
+def write_table(path, rows, first):
     """A CSV of rows: the columns first, then the others in order of
     appearance."""
     columns = list(first)
@@ -454,7 +454,7 @@ def edges(values):
     return np.concatenate([[2*v[0] - mid[0]], mid, [2*v[-1] - mid[-1]]])
 
 
-def mapPair(grid, text):
+def map_pair(grid, text):
     """The plotted parameters: -map X,Y (or X), else the first two that
     vary (or the first one)."""
     varying = [n for n in grid if len(grid[n]) > 1] or list(grid)[:1]
@@ -468,7 +468,7 @@ def mapPair(grid, text):
     return pair
 
 
-def hoverLine(param, r):
+def hover_line(param, r):
     """The report of one hover row."""
     if r["note"]:
         return "no hover %s in the grid's range (%s)" % (param, r["note"])
@@ -515,8 +515,8 @@ def arguments(argv):
 def main(argv=None):
     args = arguments(argv)
     try:
-        grid = parseGrid(args.grid)
-        pair = mapPair(grid, args.map)
+        grid = parse_grid(args.grid)
+        pair = map_pair(grid, args.map)
         os.makedirs(args.dir, exist_ok=True)
         model = Model(args.dict, args.dir, args.solver, args.nIter,
                       args.massBody)
@@ -525,9 +525,9 @@ def main(argv=None):
         hover = Hover(sweep, grid, args.hover, args.hoverTol) \
             if args.hover else None
         start = time.time()
-        rows = sweep.runAll(gridPoints(grid), args.np)
+        rows = sweep.run_all(grid_points(grid), args.np)
         wall = time.time() - start
-        writeTable(args.o + ".csv", rows, list(grid) + list(RESULTS))
+        write_table(args.o + ".csv", rows, list(grid) + list(RESULTS))
         print("qsSweep: %d points (%d cycles, %d steps per cycle, %d at a"
               " time) in %.1f s wall, %.3f s per run: %s.csv"
               % (len(rows), args.cycles, args.stepsPerCycle, args.np, wall,
@@ -537,12 +537,12 @@ def main(argv=None):
                  os.path.basename(args.dict), len(rows), args.cycles))
         if hover:
             table = hover.table(rows, args.np)
-            writeTable(args.o + "-hover.csv", table,
+            write_table(args.o + "-hover.csv", table,
                        list(grid) + list(RESULTS) + ["evaluations"])
             for r in table:
                 print("qsSweep: %s: %s" % (", ".join(
                     "%s %.6g" % (n, r[n]) for n in grid if n != args.hover)
-                    or "hover", hoverLine(args.hover, r)))
+                    or "hover", hover_line(args.hover, r)))
     except SweepError as e:
         sys.exit("flapfoam.qs_sweep: %s" % e)
 

@@ -30,8 +30,8 @@ import sys
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from flapfoam.foam_dict import multibodyCoeffs
-from flapfoam.wang import imposedJoints
+from flapfoam.foam_dict import multibody_coeffs
+from flapfoam.wang import imposed_joints
 
 
 def vec(tokens):
@@ -97,13 +97,13 @@ class SingleWingDrone:
         wing = coeffs["bodies"]["wing"]
         self.mass = float(wing["mass"][0])
         self.g = -vec(coeffs.get("g", ["0", "0", "0"]))[2]
-        joints = imposedJoints(coeffs)
+        joints = imposed_joints(coeffs)
         self.phi, self.alpha = joints[2], joints[3]
         entries = [e for e in coeffs["aerodynamics"].values()
                    if isinstance(e, dict)]
         self.wing = Wing(entries[0])
 
-    def wingMotion(self, t):
+    def wing_motion(self, t):
         """The wing's orientation E (body -> global) and angular velocity
         at t (the prescribed flapping and pitching)."""
         phi, phiDot, _ = self.phi(t)
@@ -116,7 +116,7 @@ class SingleWingDrone:
 
     def rhs(self, t, y):
         x, z, xDot, zDot = y
-        E, omega = self.wingMotion(t)
+        E, omega = self.wing_motion(t)
         F, _ = self.wing.force(E, np.array([x, 0, z]),
                                np.array([xDot, 0, zDot]), omega)
         return [xDot, zDot, F[0]/self.mass, F[2]/self.mass - self.g]
@@ -142,7 +142,7 @@ def main():
     if args.cycles <= 0 or args.dt <= 0:
         parser.error("-cycles %g, -dt %g: both must be positive"
                      % (args.cycles, args.dt))
-    drone = SingleWingDrone(multibodyCoeffs(args.dict))
+    drone = SingleWingDrone(multibody_coeffs(args.dict))
     endTime = args.cycles/drone.phi.frequency
     ref = drone.fly(endTime, args.dt)
     np.savetxt(args.out, ref, header="t x z xDot zDot")

@@ -104,7 +104,7 @@ def column(table, name):
 
 def cell_decomposition(cell_dist, out):
     """Write the ranks of cellDist (a volScalarField) as a labelList."""
-    ranks = np.asarray(foam_mesh.readScalarField(cell_dist))
+    ranks = np.asarray(foam_mesh.read_scalar_field(cell_dist))
     labels = np.rint(ranks).astype(int)
     if ranks.ndim != 1 or np.any(np.abs(ranks - labels) > 1e-6) \
             or labels.min() < 0:
@@ -119,14 +119,14 @@ def cell_decomposition(cell_dist, out):
 
 def read_decomposition(fname):
     """A labelList file (cell to rank) as an array."""
-    return np.asarray(foam_mesh.readLabels(fname))
+    return np.asarray(foam_mesh.read_labels(fname))
 
 
 def neighbour_ranks(poly_mesh, decomposition):
     """Per rank (array, index = rank): the number of other ranks it shares
     internal faces with."""
-    owner = np.asarray(foam_mesh.readLabels(poly_mesh + "/owner"))
-    neighbour = np.asarray(foam_mesh.readLabels(poly_mesh + "/neighbour"))
+    owner = np.asarray(foam_mesh.read_labels(poly_mesh + "/owner"))
+    neighbour = np.asarray(foam_mesh.read_labels(poly_mesh + "/neighbour"))
     a = decomposition[owner[:len(neighbour)]]
     b = decomposition[neighbour]
     cut = a != b
@@ -142,8 +142,8 @@ def cell_order_gap(poly_mesh, decomposition):
     cells in the mesh's order, as decomposePar keeps them): the spread of
     the rank's matrix around its diagonal (0 for a rank without such a
     face)."""
-    owner = np.asarray(foam_mesh.readLabels(poly_mesh + "/owner"))
-    neighbour = np.asarray(foam_mesh.readLabels(poly_mesh + "/neighbour"))
+    owner = np.asarray(foam_mesh.read_labels(poly_mesh + "/owner"))
+    neighbour = np.asarray(foam_mesh.read_labels(poly_mesh + "/neighbour"))
     owner = owner[:len(neighbour)]
     local = np.empty(len(decomposition), dtype=int)
     n = int(decomposition.max()) + 1

@@ -15,7 +15,7 @@ import re
 
 import numpy as np
 
-from flapfoam.tables import timeValue
+from flapfoam.tables import time_value
 
 LOG = "log.overPimpleDyMFoam"
 
@@ -49,7 +49,7 @@ def steps(case):
     steps of the earlier ones from its first time on."""
     logs = [os.path.join(case, LOG)] + sorted(
         glob.glob(os.path.join(case, LOG + ".*")),
-        key=lambda f: timeValue(os.path.basename(f)[len(LOG) + 1:], 0.0))
+        key=lambda f: time_value(os.path.basename(f)[len(LOG) + 1:], 0.0))
     rows = []
     for path in logs:
         if not os.path.isfile(path):

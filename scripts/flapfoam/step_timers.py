@@ -13,7 +13,7 @@ import sys
 
 import numpy as np
 
-from flapfoam.tables import timeValue
+from flapfoam.tables import time_value
 
 GROUPS = ["rbd", "overset", "pimple", "total"]
 
@@ -68,7 +68,7 @@ def find_files(path):
         sys.exit("plotStepTimers: no stepTimers.dat under " + path)
 
     return sorted(found, key=lambda f: (
-        timeValue(os.path.basename(os.path.dirname(f)), 0.0), f))
+        time_value(os.path.basename(os.path.dirname(f)), 0.0), f))
 
 
 def read_file(fname):

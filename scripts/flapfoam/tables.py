@@ -14,7 +14,7 @@ import sys
 import numpy as np
 
 
-def readTable(path):
+def read_table(path):
     """(columns, rows) of a joints.dat/bodies.dat file: the first comment
     line starting '# time' names the columns."""
     columns = None
@@ -35,7 +35,7 @@ def readTable(path):
     return columns, data
 
 
-def timeValue(name, default=None):
+def time_value(name, default=None):
     """The time a folder's name stands for, or default if it is no
     number."""
     try:
@@ -44,26 +44,26 @@ def timeValue(name, default=None):
         return default
 
 
-def startFolders(base):
+def start_folders(base):
     """Start-time folders of a postProcessing/<name> directory, in order."""
     if not os.path.isdir(base):
         return []
-    found = [(timeValue(d), os.path.join(base, d)) for d in os.listdir(base)]
+    found = [(time_value(d), os.path.join(base, d)) for d in os.listdir(base)]
     return sorted(f for f in found if f[0] is not None)
 
 
-def joinedTable(base, fileName, keepEarlierAtStart):
+def joined_table(base, fileName, keepEarlierAtStart):
     """The rows of base/<t>/fileName of all start folders t joined: a later
     folder replaces the rows from its start time on; its first row (the
     start time) is dropped when keepEarlierAtStart and an earlier row
     exists."""
     columns = None
     data = None
-    for t0, folder in startFolders(base):
+    for t0, folder in start_folders(base):
         path = os.path.join(folder, fileName)
         if not os.path.isfile(path):
             continue
-        cols, rows = readTable(path)
+        cols, rows = read_table(path)
         if columns is None:
             columns, data = cols, rows
             continue
@@ -79,9 +79,9 @@ def joinedTable(base, fileName, keepEarlierAtStart):
     return columns, data
 
 
-def timeFolders(case):
+def time_folders(case):
     """Numeric time folders of a case (float, path), in order."""
-    out = [(timeValue(os.path.basename(d)), d)
+    out = [(time_value(os.path.basename(d)), d)
            for d in glob.glob(os.path.join(case, "[0-9]*"))]
     return sorted(f for f in out if f[0] is not None)
 

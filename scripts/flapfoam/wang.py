@@ -11,7 +11,7 @@ import math
 import numpy as np
 
 
-def wangMotion(entry):
+def wang_motion(entry):
     """Analytic Wang kinematics of an imposedMotion entry (type wang):
     flapping q = offset + A/asin(K) asin(K cos(theta)),
     pitching q = offset + A/tanh(K) tanh(K sin(theta)),
@@ -53,20 +53,20 @@ def wangMotion(entry):
     return evaluate
 
 
-def imposedJoints(coeffs):
+def imposed_joints(coeffs):
     """{joint index: wang evaluator} of the imposedMotion entries."""
     joints = {}
     for name, entry in coeffs.get("imposedMotion", {}).items():
         if isinstance(entry, dict) and "joint" in entry:
-            ev = wangMotion(entry)
+            ev = wang_motion(entry)
             ev.name = name
             joints[int(entry["joint"][0])] = ev
     return joints
 
 
-def wangJoints(coeffs):
+def wang_joints(coeffs):
     """{joint index: wang evaluator} of the imposedMotion entries of type
     wang (other types skipped)."""
-    return {int(e["joint"][0]): wangMotion(e)
+    return {int(e["joint"][0]): wang_motion(e)
             for e in coeffs.get("imposedMotion", {}).values()
             if isinstance(e, dict) and e.get("type", [""])[0] == "wang"}

@@ -47,12 +47,12 @@ def chord(r):
     return CROOT*np.sqrt(np.clip(1.0 - (r/R)**2, 0.0, None))
 
 
-def planformArea():
+def planform_area():
     """S = pi/4 c_r R (= R cbar)."""
     return 0.25*math.pi*CROOT*R
 
 
-def ellipeM(m):
+def ellipe_m(m):
     """Complete elliptic integral of the second kind E(m) (parameter m),
     by the arithmetic-geometric mean (no scipy needed)."""
     a0, g0 = 1.0, math.sqrt(1.0 - m)
@@ -68,47 +68,47 @@ def ellipeM(m):
     return (1.0 - s)*0.5*math.pi/a0
 
 
-def halfPerimeter():
+def half_perimeter():
     """Length of the curved (leading edge - tip - trailing edge) edge."""
     m = 1.0 - (A/R)**2
-    return 2.0*R*ellipeM(m)
+    return 2.0*R*ellipe_m(m)
 
 
-def wingArea():
+def wing_area():
     """Analytic wetted area of the plate: 2 S + t (P/2 + c_r)."""
-    return 2.0*planformArea() + THICKNESS*(halfPerimeter() + CROOT)
+    return 2.0*planform_area() + THICKNESS*(half_perimeter() + CROOT)
 
 
-def edgePoint(tau):
+def edge_point(tau):
     """Point E(tau) on the planform edge (x, y)."""
     tau = np.asarray(tau, dtype=float)
     return np.stack([A*np.cos(tau), R0 + R*np.sin(tau)], axis=-1)
 
 
-def edgeNormal(tau):
+def edge_normal(tau):
     """Outward unit normal of the planform edge at E(tau)."""
     tau = np.asarray(tau, dtype=float)
     n = np.stack([np.cos(tau)/A, np.sin(tau)/R], axis=-1)
     return n/np.linalg.norm(n, axis=-1, keepdims=True)
 
 
-def radiusOfGyration():
+def radius_of_gyration():
     """R2 = sqrt(int_{R0}^{R0+R} c(r - R0) r^2 dr / S), r from the flapping
     axis (closed form; checked against radiusOfGyrationQuadrature)."""
     return math.sqrt(R0**2 + 8.0/(3.0*math.pi)*R0*R + 0.25*R**2)
 
 
-def radiusOfGyrationQuadrature(n=200001):
+def radius_of_gyration_quadrature(n=200001):
     """The same integral by the trapezoidal rule in tau, r = R0 + R sin(tau)
     (smooth integrand despite the square-root tip)."""
     tau = np.linspace(0.0, 0.5*math.pi, n)
     rho = R*np.sin(tau)
     w = chord(rho)*(R0 + rho)**2*R*np.cos(tau)
     integral = np.trapz(w, tau)
-    return math.sqrt(integral/planformArea())
+    return math.sqrt(integral/planform_area())
 
 
-def poseMatrix(phiDeg, alphaDeg):
+def pose_matrix(phiDeg, alphaDeg):
     """The wing's rotation at flapping angle phi (about z) and pitching
     angle alpha (about the pitch axis y), in degrees."""
     phi, alpha = np.radians(phiDeg), np.radians(alphaDeg)
@@ -123,9 +123,9 @@ def summary():
     return {
         "R": R, "R0": R0, "cbar": CBAR, "thickness": THICKNESS,
         "rootChord": CROOT,
-        "planformArea": planformArea(),
-        "halfPerimeter": halfPerimeter(),
-        "wingAreaAnalytic": wingArea(),
+        "planformArea": planform_area(),
+        "halfPerimeter": half_perimeter(),
+        "wingAreaAnalytic": wing_area(),
     }
 
 

@@ -13,8 +13,8 @@ import math
 import numpy as np
 
 from flapfoam import wing_geometry as geo
-from flapfoam.background_mesh import BACKGROUND, backgroundCellSize
-from flapfoam.block_mesh import (BlockMesh, nCellsGrowth, sizesGeometric)
+from flapfoam.background_mesh import BACKGROUND, background_cell_size
+from flapfoam.block_mesh import (BlockMesh, n_cells_growth, sizes_geometric)
 
 
 # --------------------------------------------------------------------------
@@ -71,20 +71,20 @@ def resample(pts, n):
     return np.stack([np.interp(t, s, pts[:, k]) for k in range(2)], axis=1)
 
 
-def curveLength(pts):
+def curve_length(pts):
     return float(np.sum(np.linalg.norm(np.diff(pts, axis=0), axis=1)))
 
 
-def ellipseArc(t0, t1, n=4000):
-    return geo.edgePoint(np.linspace(t0, t1, n))
+def ellipse_arc(t0, t1, n=4000):
+    return geo.edge_point(np.linspace(t0, t1, n))
 
 
-def offsetArc(t0, t1, d, n=4000):
+def offset_arc(t0, t1, d, n=4000):
     t = np.linspace(t0, t1, n)
-    return geo.edgePoint(t) + d*geo.edgeNormal(t)
+    return geo.edge_point(t) + d*geo.edge_normal(t)
 
 
-def circleArc(c, r, a0, a1, ry=None):
+def circle_arc(c, r, a0, a1, ry=None):
     """Arc of the circle (or, with ry, the ellipse of radii r along x and
     ry along y) about c from angle a0 to a1, 400 points."""
     a = np.linspace(a0, a1, 400)
@@ -98,7 +98,7 @@ def line(p0, p1, n=50):
     return p0 + s*(p1 - p0)
 
 
-def coreCurve(f, y1, n=4000):
+def core_curve(f, y1, n=4000):
     """Core side x = f c(r)/2 from the root to y = y1 (x >= 0 branch)."""
     y = np.linspace(geo.R0, y1, n)
     return np.stack([0.5*f*geo.chord(y - geo.R0), y], axis=1)
@@ -108,12 +108,12 @@ def coreCurve(f, y1, n=4000):
 # Wing component
 # --------------------------------------------------------------------------
 
-def levelComponent(comp, lev):
+def level_component(comp, lev):
     """The component's parameters at a level (its own margin, if any)"""
     return dict(comp, margin=lev.get("margin", comp["margin"]))
 
 
-def wingPlanform(comp):
+def wing_planform(comp):
     """Planform points (x, y) and curves of the wing component."""
     a, R0 = geo.A, geo.R0
     d = comp["margin"]
@@ -125,16 +125,16 @@ def wingPlanform(comp):
     tau2 = comp["tau2"]
 
     P = {}
-    P["E0"] = geo.edgePoint(math.pi)
-    P["E5"] = geo.edgePoint(0.0)
-    P["P1"] = geo.edgePoint(tau2)
-    P["P2"] = geo.edgePoint(math.pi - tau2)
+    P["E0"] = geo.edge_point(math.pi)
+    P["E5"] = geo.edge_point(0.0)
+    P["P1"] = geo.edge_point(tau2)
+    P["P2"] = geo.edge_point(math.pi - tau2)
     P["Q0"] = np.array([-f*a, R0])
     P["Q1"] = np.array([f*a, R0])
 
     # Q2 on the core curve x = f c(r)/2, inwards from P1 along a blend of
     # the inward normal and -y
-    n1 = geo.edgeNormal(tau2)
+    n1 = geo.edge_normal(tau2)
     w = comp["diagBlend"]
     dvec = w*n1 + (1 - w)*np.array([0.0, 1.0])
     dvec /= np.linalg.norm(dvec)
@@ -156,28 +156,28 @@ def wingPlanform(comp):
     P["OQ0"] = np.array([-f*a, R0 - dr])
     P["OQ1"] = np.array([f*a, R0 - dr])
     P["OP1"] = P["P1"] + d*n1
-    P["OP2"] = P["P2"] + d*geo.edgeNormal(math.pi - tau2)
+    P["OP2"] = P["P2"] + d*geo.edge_normal(math.pi - tau2)
 
     C = {}   # curved planform edges (a, b) -> dense points a -> b
-    C[("E0", "P2")] = ellipseArc(math.pi, math.pi - tau2)
-    C[("P2", "P1")] = ellipseArc(math.pi - tau2, tau2)
-    C[("E5", "P1")] = ellipseArc(0.0, tau2)
-    core = coreCurve(f, P["Q2"][1])
+    C[("E0", "P2")] = ellipse_arc(math.pi, math.pi - tau2)
+    C[("P2", "P1")] = ellipse_arc(math.pi - tau2, tau2)
+    C[("E5", "P1")] = ellipse_arc(0.0, tau2)
+    core = core_curve(f, P["Q2"][1])
     C[("Q1", "Q2")] = core
     C[("Q0", "Q3")] = core*np.array([-1, 1])
     C[("OE0", "OP2")] = np.concatenate([
-        circleArc(P["E0"], d, 1.25*math.pi, math.pi, ry=dr),
-        offsetArc(math.pi, math.pi - tau2, d)[1:]])
-    C[("OP2", "OP1")] = offsetArc(math.pi - tau2, tau2, d)
+        circle_arc(P["E0"], d, 1.25*math.pi, math.pi, ry=dr),
+        offset_arc(math.pi, math.pi - tau2, d)[1:]])
+    C[("OP2", "OP1")] = offset_arc(math.pi - tau2, tau2, d)
     C[("OE5", "OP1")] = np.concatenate([
-        circleArc(P["E5"], d, -0.25*math.pi, 0.0, ry=dr),
-        offsetArc(0.0, tau2, d)[1:]])
+        circle_arc(P["E5"], d, -0.25*math.pi, 0.0, ry=dr),
+        offset_arc(0.0, tau2, d)[1:]])
     C[("OE0", "OQ0")] = np.concatenate([
-        circleArc(P["E0"], d, 1.25*math.pi, 1.5*math.pi, ry=dr),
+        circle_arc(P["E0"], d, 1.25*math.pi, 1.5*math.pi, ry=dr),
         line(P["E0"] + [0, -dr], P["OQ0"])[1:]])
     C[("OQ1", "OE5")] = np.concatenate([
         line(P["OQ1"], P["E5"] + [0, -dr])[:-1],
-        circleArc(P["E5"], d, 1.5*math.pi, 1.75*math.pi, ry=dr)])
+        circle_arc(P["E5"], d, 1.5*math.pi, 1.75*math.pi, ry=dr)])
     for k, pts in C.items():
         for end, name in ((0, k[0]), (-1, k[1])):
             if np.linalg.norm(pts[end] - P[name]) > 1e-9:
@@ -185,11 +185,11 @@ def wingPlanform(comp):
     return P, C
 
 
-def planformLength(P, C, a, b):
+def planform_length(P, C, a, b):
     if (a, b) in C:
-        return curveLength(C[(a, b)])
+        return curve_length(C[(a, b)])
     if (b, a) in C:
-        return curveLength(C[(b, a)])
+        return curve_length(C[(b, a)])
     return float(np.linalg.norm(P[b] - P[a]))
 
 
@@ -215,24 +215,24 @@ OUTER_SIDE = {"ringL": "x1", "ringTp": "x1", "ringT": "x1",
               "rootL": "y0", "rootC": "y0", "rootT": "y0"}
 
 
-def planformSizes(lev, comp, P, C, hOut):
+def planform_sizes(lev, comp, P, C, hOut):
     """Cell sizes of the planform edges (a, b) -> sizes a -> b, and the
     radial distribution and the top span size dTop."""
     d = comp["margin"]
     q = lev["q"]
     nS, nL, nC = lev["nS"], lev["nL"], lev["nC"]
     dsE = lev["dsE"]
-    Lp = lambda a, b: planformLength(P, C, a, b)  # noqa: E731
+    Lp = lambda a, b: planform_length(P, C, a, b)  # noqa: E731
 
     S = {}
     # radial: from the plate edge out to the overset boundary
-    nR = nCellsGrowth(d, dsE, hOut, q)
-    rad = sizesGeometric(d, nR, dsE, q=q)
+    nR = n_cells_growth(d, dsE, hOut, q)
+    rad = sizes_geometric(d, nR, dsE, q=q)
     for p in ("E0", "Q0", "Q1", "E5", "P1", "P2"):
         S[(p, "O" + p)] = rad
     # across the edge strips (fine at the plate edge)
     for a_, b_ in (("E0", "Q0"), ("P2", "Q3"), ("E5", "Q1"), ("P1", "Q2")):
-        S[(a_, b_)] = sizesGeometric(Lp(a_, b_), nL, dsE, q=q)
+        S[(a_, b_)] = sizes_geometric(Lp(a_, b_), nL, dsE, q=q)
     # core (chordwise) and tip block along the tip: uniform
     for a_, b_ in (("Q0", "Q1"), ("Q3", "Q2"), ("P2", "P1")):
         S[(a_, b_)] = np.full(nC, Lp(a_, b_)/nC)
@@ -242,7 +242,7 @@ def planformSizes(lev, comp, P, C, hOut):
     dTop = min(S[("P1", "Q2")][-1], S[("P2", "Q3")][-1])
     d0 = comp["spanFirst"]*dsE
     for a_, b_ in (("E0", "P2"), ("Q0", "Q3"), ("Q1", "Q2"), ("E5", "P1")):
-        S[(a_, b_)] = sizesGeometric(Lp(a_, b_), nS, d0, max(dTop, d0), q=q)
+        S[(a_, b_)] = sizes_geometric(Lp(a_, b_), nS, d0, max(dTop, d0), q=q)
     # outer edges: same fractions as the inner edge they face
     for (a_, b_), (ia, ib) in {
             ("OE0", "OP2"): ("E0", "P2"), ("OP2", "OP1"): ("P2", "P1"),
@@ -253,7 +253,7 @@ def planformSizes(lev, comp, P, C, hOut):
     return S, rad, dTop
 
 
-def checkCounterClockwise(P):
+def check_counter_clockwise(P):
     for k, qd in QUADS.items():
         xy = np.array([P[n] for n in qd])
         area = 0.5*np.sum(xy[:, 0]*np.roll(xy[:, 1], -1)
@@ -262,7 +262,7 @@ def checkCounterClockwise(P):
             raise RuntimeError("block %s is not counter-clockwise" % k)
 
 
-def addBlocks(bm, V):
+def add_blocks(bm, V):
     """The blocks of the three z layers and their patch faces."""
     # the overset patch first: v1912 wants the master overset patch to be
     # the first patch of the mesh (the wing mesh is the master of the merge)
@@ -288,7 +288,7 @@ def addBlocks(bm, V):
                 bm.face("wing", b, EDGE_SIDE[k])
 
 
-def wingComponent(lev, comp, pose=(0.0, 0.0)):
+def wing_component(lev, comp, pose=(0.0, 0.0)):
     """BlockMesh of the wing component for level parameters lev."""
     t = geo.THICKNESS
     d = comp["margin"]
@@ -296,18 +296,18 @@ def wingComponent(lev, comp, pose=(0.0, 0.0)):
     nT = lev["nT"]
     dsZ = t/nT
     dsE = lev["dsE"]
-    hOut = backgroundCellSize(lev, BACKGROUND)
+    hOut = background_cell_size(lev, BACKGROUND)
 
-    P, C = wingPlanform(comp)
-    S, rad, dTop = planformSizes(lev, comp, P, C, hOut)
+    P, C = wing_planform(comp)
+    S, rad, dTop = planform_sizes(lev, comp, P, C, hOut)
     nR = len(rad)
 
     # ---- z levels and distributions ----
-    nZ = nCellsGrowth(d, dsZ, hOut, q)
+    nZ = n_cells_growth(d, dsZ, hOut, q)
     zs = [-(0.5*t + d), -0.5*t, 0.5*t, 0.5*t + d]
-    zSizes = [sizesGeometric(d, nZ, dsZ, q=q)[::-1],
+    zSizes = [sizes_geometric(d, nZ, dsZ, q=q)[::-1],
               np.full(nT, t/nT),
-              sizesGeometric(d, nZ, dsZ, q=q)]
+              sizes_geometric(d, nZ, dsZ, q=q)]
 
     # ---- pose (optional initial flapping/pitching for tests) ----
     phi, alpha = pose
@@ -330,27 +330,27 @@ def wingComponent(lev, comp, pose=(0.0, 0.0)):
     # planform edges at every z level
     for iz, z in enumerate(zs):
         for (a_, b_), s in S.items():
-            bm.setSizes(V[(a_, iz)], V[(b_, iz)], s)
+            bm.set_sizes(V[(a_, iz)], V[(b_, iz)], s)
         for (a_, b_), pts in C.items():
             inner = resample(pts, comp["nPoly"])[1:-1]
             bm.curved(V[(a_, iz)], V[(b_, iz)],
                       [X(p, z) for p in inner])
     for iz in range(3):
         for nme in names:
-            bm.setSizes(V[(nme, iz)], V[(nme, iz + 1)], zSizes[iz])
+            bm.set_sizes(V[(nme, iz)], V[(nme, iz + 1)], zSizes[iz])
 
-    checkCounterClockwise(P)
-    addBlocks(bm, V)
+    check_counter_clockwise(P)
+    add_blocks(bm, V)
 
     info = dict(nR=nR, nZ=nZ, dsZ=dsZ, dsE=dsE, hOut=hOut,
                 radialLast=float(rad[-1]), zLast=float(zSizes[2][-1]),
                 spanMax=float(max(S[("E0", "P2")])), dTop=float(dTop),
                 points={k: [float(v[0]), float(v[1])] for k, v in P.items()},
-                blocks=len(bm.blocks), cellsPlanned=bm.nCells())
+                blocks=len(bm.blocks), cellsPlanned=bm.n_cells())
     return bm, info
 
 
-def checkBlockSides(bm):
+def check_block_sides(bm):
     """Each patch face must be a face of exactly one block: a cheap
     consistency check of the side names used above."""
     count = {}
@@ -374,11 +374,11 @@ def checkBlockSides(bm):
 # Envelope of the motion
 # --------------------------------------------------------------------------
 
-def componentOutline(comp, nPer=200):
+def component_outline(comp, nPer=200):
     """Points on the overset boundary of the wing component at phi = alpha
     = 0 (planform outer contour at z = +-(t/2 + margin)): the extreme points
     of the component under any rotation."""
-    P, C = wingPlanform(comp)
+    P, C = wing_planform(comp)
     pts = []
     for k in (("OE0", "OP2"), ("OP2", "OP1"), ("OE5", "OP1"),
               ("OE0", "OQ0"), ("OQ1", "OE5")):
@@ -390,24 +390,24 @@ def componentOutline(comp, nPer=200):
         np.column_stack([xy, np.full(len(xy), z)]) for z in (-H, H)])
 
 
-def rotY(a):
+def rot_y(a):
     return np.array([[math.cos(a), 0, math.sin(a)], [0, 1, 0],
                      [-math.sin(a), 0, math.cos(a)]])
 
 
-def sweptEnvelope(comp, bg, tilts=(0.0,)):
+def swept_envelope(comp, bg, tilts=(0.0,)):
     """Envelope of the component over |phi| <= phiMax, |alpha| <= alphaMax
     (and a pitch of the stroke plane about y by each angle of tilts: the
     body pitch of the body-wing drone): zMax, rMax (about the z axis), and
     the half-space y >= yA outside the cylinder r <= rB."""
-    base = componentOutline(comp)
+    base = component_outline(comp)
     pts = []
     for phi in np.linspace(-bg["phiMax"], bg["phiMax"], 61):
         for alpha in np.linspace(-bg["alphaMax"], bg["alphaMax"], 19):
             Rz = np.array([[math.cos(phi), -math.sin(phi), 0],
                            [math.sin(phi), math.cos(phi), 0], [0, 0, 1]])
             for tilt in tilts:
-                pts.append(base @ (rotY(tilt) @ Rz @ rotY(alpha)).T)
+                pts.append(base @ (rot_y(tilt) @ Rz @ rot_y(alpha)).T)
     pts = np.concatenate(pts)
     r = np.hypot(pts[:, 0], pts[:, 1])
     rMax = float(r.max())

@@ -8,14 +8,14 @@ import math
 
 import numpy as np
 
-from flapfoam.control_plot import errorMetrics
+from flapfoam.control_plot import error_metrics
 
 
 def test_metrics_of_made_up_errors():
     # e = 0.1 exp(-3 t): in a band of 0.01 from t = ln(10)/3 = 0.768 s
     t = np.linspace(0, 2, 201)
     e = 0.1*np.exp(-3*t)
-    m = errorMetrics(t, e, 0.01, 1.0)
+    m = error_metrics(t, e, 0.01, 1.0)
     after = e[100:]
     assert m["settlingTime"] == t[77]
     assert m["inBand"] == 1
@@ -23,8 +23,8 @@ def test_metrics_of_made_up_errors():
     assert abs(m["meanError"] - after.mean()) < 1e-15
     assert abs(m["rmsError"] - math.sqrt((after**2).mean())) < 1e-15
     # -e + 0.02 t^4: out of the band again at the end
-    late = errorMetrics(t, -e + 0.02*t**4, 0.01, 1.0)
+    late = error_metrics(t, -e + 0.02*t**4, 0.01, 1.0)
     assert late["settlingTime"] == math.inf and late["inBand"] == 0
     # 0.001: never out
-    never = errorMetrics(t, 0.001 + 0*t, 0.01, 1.0)
+    never = error_metrics(t, 0.001 + 0*t, 0.01, 1.0)
     assert never["settlingTime"] == 0 and never["inBand"] == 1

@@ -7,7 +7,7 @@ made-up joints.dat whose answers are known by hand."""
 import numpy as np
 import pytest
 
-from flapfoam.qs_sweep import pointResults
+from flapfoam.qs_sweep import point_results
 
 
 def test_point_results_of_a_made_up_joints_table():
@@ -16,7 +16,7 @@ def test_point_results_of_a_made_up_joints_table():
     t = np.linspace(0, 1, 2001)
     d = np.column_stack([t, t**3, 3*t**2, 0*t, -t, -1 + 0*t, 0*t,
                          t**2, t**2, 1 + 0*t, 1 + 0*t])
-    r = pointResults(d, "time q_0 qDot_0 qDdot_0 q_1 qDot_1 qDdot_1 tau_2"
+    r = point_results(d, "time q_0 qDot_0 qDdot_0 q_1 qDot_1 qDdot_1 tau_2"
                      " power_2 tau_3 power_3".split(), 0, 1, 10.0)
     assert r["meanClimbRate"] == pytest.approx(1, abs=1e-12)
     assert r["meanClimbAcceleration"] == pytest.approx(3, abs=1e-12)

@@ -24,7 +24,7 @@ def write(path, text):
 
 
 def test_dictionary_nesting_lists_and_comments(tmp_path):
-    d = foam_dict.readFoamDict(write(tmp_path / "d", HEADER + """
+    d = foam_dict.read_foam_dict(write(tmp_path / "d", HEADER + """
 solver { type Newmark; }   // a comment
 g (0 0 -9.81);
 /* a block
@@ -46,18 +46,18 @@ def test_multibody_coeffs_of_either_layout(tmp_path):
     top = write(tmp_path / "a", HEADER + "nIter 3;\n")
     sub = write(tmp_path / "b", HEADER
                 + "eABAMeshMotionCoeffs { nIter 2; }\nother 1;\n")
-    assert foam_dict.multibodyCoeffs(top)["nIter"] == ["3"]
-    assert foam_dict.multibodyCoeffs(sub) == {"nIter": ["2"]}
+    assert foam_dict.multibody_coeffs(top)["nIter"] == ["3"]
+    assert foam_dict.multibody_coeffs(sub) == {"nIter": ["2"]}
 
 
 def test_state_of_a_run_and_a_hand_written_one(tmp_path):
-    run = foam_dict.readState(write(tmp_path / "s1", HEADER + """
+    run = foam_dict.read_state(write(tmp_path / "s1", HEADER + """
 t 0.0125; deltaT 1.2e-05;
 q 2(0.1 -0.2); qDot 2(1 2); qDdot 2(3 4);
 """))
     assert run["t"] == 0.0125
     assert list(run["q"]) == [0.1, -0.2] and list(run["qDdot"]) == [3, 4]
-    hand = foam_dict.readState(write(tmp_path / "s2", HEADER
+    hand = foam_dict.read_state(write(tmp_path / "s2", HEADER
                                     + "q (0.3 0.1); qDot (1 0);\n"))
     assert list(hand["q"]) == [0.3, 0.1]
     assert "qDdot" not in hand and "t" not in hand
@@ -70,13 +70,13 @@ def test_table_joined_over_a_restart(tmp_path):
         (base / t0).mkdir(parents=True)
         (base / t0 / "joints.dat").write_text(
             "# time q_0\n" + "".join("%g %g\n" % r for r in rows))
-    columns, data = tables.joinedTable(str(base), "joints.dat", False)
+    columns, data = tables.joined_table(str(base), "joints.dat", False)
     assert columns == ["time", "q_0"]
     assert data.tolist() == [[0, 1], [1, 2], [2, 30], [3, 40], [4, 50]]
-    _, kept = tables.joinedTable(str(base), "joints.dat", True)
+    _, kept = tables.joined_table(str(base), "joints.dat", True)
     assert kept[:, 1].tolist() == [1, 2, 3, 40, 50]
-    assert tables.timeValue("0.0125") == 0.0125
-    assert tables.timeValue("constant", -1) == -1
+    assert tables.time_value("0.0125") == 0.0125
+    assert tables.time_value("constant", -1) == -1
 
 
 LOG = """Starting time loop

@@ -77,7 +77,7 @@ def test_chart_of_a_run_and_of_one_without_steps(tmp_path):
     timers_file(timers / "0", [(t, 0.1, 0.2, 1.0, 1.3) for t in range(1, 6)])
     out = tmp_path / "plots"
     out.mkdir()
-    assert plotting.stepTimers(str(tmp_path / "run"), str(out), "run") == 0
+    assert plotting.step_timers_chart(str(tmp_path / "run"), str(out), "run") == 0
     assert (out / "stepTimers.png").stat().st_size > 1000
     # 2 rows: none after the 2 start-up steps
     short = tmp_path / "short"

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from flapfoam import wing_geometry as geo
-from flapfoam.background_mesh import BACKGROUND, backgroundCellSize
+from flapfoam.background_mesh import BACKGROUND, background_cell_size
 from flapfoam.quasi_steady import Wing
 from flapfoam.wing_mesh import LEVELS
 
@@ -27,8 +27,8 @@ def wing(**extra):
 
 def test_strips_cover_the_semi_elliptic_planform():
     w = wing()
-    assert w.area.sum() == pytest.approx(geo.planformArea(), rel=1e-4)
-    assert geo.planformArea() == pytest.approx(geo.R*geo.CBAR, rel=1e-15)
+    assert w.area.sum() == pytest.approx(geo.planform_area(), rel=1e-4)
+    assert geo.planform_area() == pytest.approx(geo.R*geo.CBAR, rel=1e-15)
 
 
 def test_no_force_at_rest_in_still_air():
@@ -60,13 +60,13 @@ def test_lift_at_45_degrees_is_normal_to_the_flow_and_scales_with_u2():
 
 
 def test_radius_of_gyration_closed_form_equals_quadrature():
-    assert geo.radiusOfGyration() == pytest.approx(
-        geo.radiusOfGyrationQuadrature(), rel=1e-8)
+    assert geo.radius_of_gyration() == pytest.approx(
+        geo.radius_of_gyration_quadrature(), rel=1e-8)
 
 
 def test_levels_refine_in_order():
     order = ["tiny", "coarse", "medium", "fine", "finePlus"]
-    h = [backgroundCellSize(LEVELS[n], BACKGROUND) for n in order]
+    h = [background_cell_size(LEVELS[n], BACKGROUND) for n in order]
     assert all(a > b for a, b in zip(h, h[1:]))
     assert h[1] == pytest.approx(0.3/(12*2**3))           # coarse: 3.13 mm
     for key in ("nS", "nL", "nC"):

@@ -48,7 +48,7 @@ ANALYSIS = re.compile(
     r"mixed local/remote:(\d+)\s+remote:(\d+)\)")
 
 
-def readReports(log):
+def read_reports(log):
     """The reports of a log (flapfoam.rank_tables), each a dict: time,
     stencil, ranks, columns, rows (per rank), total, max, mean (counts as
     integers), cellImbalance, remoteShare and analysis (the stock stencil's
@@ -88,7 +88,7 @@ def close(a, b):
     return abs(a - b) <= 1e-6*max(1.0, abs(b))
 
 
-def checkTable(c, name, r):
+def check_table(c, name, r):
     """The derived rows and figures of one report"""
     rows, cols = r["rows"], r["columns"]
     total = {k: sum(row[k] for row in rows) for k in cols}
@@ -109,17 +109,17 @@ def checkTable(c, name, r):
                            r["remoteShare"]))
 
 
-def oneReport(c, name, case):
+def one_report(c, name, case):
     log = os.path.join(case, "log.overPimpleDyMFoam")
-    reports = readReports(log) if os.path.isfile(log) else []
+    reports = read_reports(log) if os.path.isfile(log) else []
     if not c.check(len(reports) == 1, "%s: one report in %s (found %d)"
                    % (name, log, len(reports))):
         return None
-    checkTable(c, name, reports[0])
+    check_table(c, name, reports[0])
     return reports[0]
 
 
-def checkStock(c, name, r):
+def check_stock(c, name, r):
     t = r["total"]
     a = r["analysis"]
     c.check(a == (t["acceptors"], t["acceptors"] - t["remote"], t["mixed"],
@@ -130,7 +130,7 @@ def checkStock(c, name, r):
                          t["mixed"], t["allRemote"])))
 
 
-def checkRuns(c, stencil, serial, parallel):
+def check_runs(c, stencil, serial, parallel):
     nothing = ["remote", "mixed", "allRemote", "remoteSlots", "procFaces",
                "procPatches", "sent", "received", "sendRanks", "recvRanks"]
     s = serial["total"]
@@ -172,16 +172,16 @@ def main():
     c = checker()
     reports = {}
     for stencil in a.stencils:
-        serial = oneReport(c, stencil + " serial",
+        serial = one_report(c, stencil + " serial",
                            os.path.join(a.serial, stencil))
-        parallel = oneReport(c, stencil + " parallel",
+        parallel = one_report(c, stencil + " parallel",
                              os.path.join(a.parallel, stencil))
         if not (serial and parallel):
             continue
-        checkRuns(c, stencil, serial, parallel)
+        check_runs(c, stencil, serial, parallel)
         if stencil == STOCK:
-            checkStock(c, stencil + " serial", serial)
-            checkStock(c, stencil + " parallel", parallel)
+            check_stock(c, stencil + " serial", serial)
+            check_stock(c, stencil + " parallel", parallel)
         reports[stencil] = parallel
     if STOCK in reports:
         for stencil, r in reports.items():

@@ -22,14 +22,14 @@ import sys
 import numpy as np
 
 from flapfoam import foam_mesh
-from flapfoam.tables import timeValue
+from flapfoam.tables import time_value
 
 
 def times(case):
     out = []
     for d in glob.glob(os.path.join(case, "*")):
         b = os.path.basename(d)
-        t = timeValue(b, 0.0)
+        t = time_value(b, 0.0)
         if t > 0 and os.path.isfile(os.path.join(d, "cellTypes")):
             out.append((t, b))
     return sorted(out)
@@ -92,8 +92,8 @@ def main():
                 print("FAIL %s: no cellTypes at %s" % (name, tn))
                 ok = False
                 continue
-            r = foam_mesh.readScalarField(os.path.join(ref, tn, "cellTypes"))
-            c = foam_mesh.readScalarField(f)
+            r = foam_mesh.read_scalar_field(os.path.join(ref, tn, "cellTypes"))
+            c = foam_mesh.read_scalar_field(f)
             match = float(np.mean(r == c))
             worst = min(worst, match)
             diff = r != c

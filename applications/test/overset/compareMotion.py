@@ -28,14 +28,14 @@ import sys
 import numpy as np
 
 from flapfoam import check_run
-from flapfoam.tables import joinedTable, startFolders
+from flapfoam.tables import joined_table, start_folders
 
 
 def bodies(case, name="eABAMeshMotion"):
     base = os.path.join(case, "postProcessing", name)
-    if not startFolders(base):
+    if not start_folders(base):
         sys.exit("compareMotion: no %s/<time>/bodies.dat" % base)
-    return joinedTable(base, "bodies.dat", keepEarlierAtStart=False)
+    return joined_table(base, "bodies.dat", keepEarlierAtStart=False)
 
 
 def main():
@@ -54,7 +54,7 @@ def main():
     # Forces
     ca, A = bodies(a.ref)
     cb, B = bodies(a.case)
-    ia, ib = check_run.matchRows(A, B)
+    ia, ib = check_run.match_rows(A, B)
     for body in a.bodies.split(","):
         check = "%s %s force" % (name, body)
         if len(ia) == 0 or len(ia) != len(A) or len(ib) != len(B):
@@ -79,7 +79,7 @@ def main():
     # Trajectory (checkRun.py's relative difference with a floor)
     ca, A = check_run.joints(a.ref)
     cb, B = check_run.joints(a.case)
-    ia, ib = check_run.matchRows(A, B)
+    ia, ib = check_run.match_rows(A, B)
     if len(ia) == 0 or len(ia) != len(A) or len(ib) != len(B):
         status |= check_run.report(
             False, "%s trajectory" % name,
@@ -91,7 +91,7 @@ def main():
             i, k = ca.index(col), cb.index(col)
             floor = 1e-3*np.abs(A[:, i]).max() + 1e-300
             worst[col] = float(
-                check_run.relDiff(A[ia, i], B[ib, k], floor).max())
+                check_run.rel_diff(A[ia, i], B[ib, k], floor).max())
         maxRel = max(worst.values())
         status |= check_run.report(
             maxRel <= a.qTol, "%s trajectory" % name,

@@ -24,17 +24,17 @@ import os
 import h5py
 import numpy as np
 
-from flapfoam.foam_dict import multibodyCoeffs
+from flapfoam.foam_dict import multibody_coeffs
 from flapfoam.quasi_steady import SingleWingDrone, vec
 
 
-def wingRows(drone, states, centre):
+def wing_rows(drone, states, centre):
     """{dataset: rows} of the wing along the flown states (t x z xDot
     zDot)."""
     d = {k: [] for k in ("orientation", "position", "velocity",
                          "angularVelocity", "force")}
     for t, x, z, xDot, zDot in states:
-        E, omega = drone.wingMotion(t)
+        E, omega = drone.wing_motion(t)
         origin, vOrigin = np.array([x, 0, z]), np.array([xDot, 0, zDot])
         F, _ = drone.wing.force(E, origin, vOrigin, omega)
         d["orientation"].append(E.reshape(9))
@@ -57,7 +57,7 @@ def main():
     parser.add_argument("-thinAfter", type=float, default=float("inf"))
     parser.add_argument("-noForce", action="store_true")
     args = parser.parse_args()
-    coeffs = multibodyCoeffs(os.path.join(args.case, "constant",
+    coeffs = multibody_coeffs(os.path.join(args.case, "constant",
                                           "dynamicMeshDict"))
     drone = SingleWingDrone(coeffs)
     drone.wing.CL, drone.wing.CD0, drone.wing.CD1 = args.CL, args.CD0, \
@@ -66,7 +66,7 @@ def main():
     late = states[:, 0] > args.thinAfter
     states = states[~late | (np.cumsum(late) % 2 == 0)]
     centre = vec(coeffs["bodies"]["wing"]["centreOfMass"])
-    d = wingRows(drone, states, centre)
+    d = wing_rows(drone, states, centre)
     folder = os.path.join(args.case, "postProcessing", "flightData", "0")
     os.makedirs(folder, exist_ok=True)
     with h5py.File(os.path.join(folder, "flightData.h5"), "w") as f:

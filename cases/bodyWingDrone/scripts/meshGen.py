@@ -40,7 +40,7 @@ import sys
 
 import sphereMesh  # this case's body component
 from flapfoam import mesh_gen, wing_mesh
-from flapfoam.block_mesh import FOAM_HEADER, writeCase
+from flapfoam.block_mesh import FOAM_HEADER, write_case
 
 # Body pitch the refined region allows for (the stroke plane tilts with it)
 THETA_MAX = math.radians(20)
@@ -64,7 +64,7 @@ class textDict:
             fh.write(header + self.text)
 
 
-def refineActions(region, margin):
+def refine_actions(region, margin):
     """The body component's ball, grown by the pass's margin, added to a
     refinement region"""
     c = (0.0, 0.0, 0.0)
@@ -74,12 +74,12 @@ def refineActions(region, margin):
 
 
 def main(argv=None):
-    args = mesh_gen.parseArgs(__doc__, sphereMesh.LEVELS, argv)
+    args = mesh_gen.parse_args(__doc__, sphereMesh.LEVELS, argv)
     tilts = (-THETA_MAX, 0.0, THETA_MAX)
     if args.list:
         for name in sphereMesh.LEVELS:
             m = mesh_gen.build(name, COMPONENT, tilts=tilts)
-            _, sinfo = sphereMesh.blockMeshDict(name)
+            _, sinfo = sphereMesh.block_mesh_dict(name)
             print("%-9s wing %7d cells, body %6d cells, background h %.2f mm"
                   % (name, m.winfo["cellsPlanned"], sinfo["cells"],
                      1e3*m.binfo["h"]))
@@ -87,12 +87,12 @@ def main(argv=None):
 
     m = mesh_gen.build(args.level, COMPONENT,
                        mesh_gen.pose(args.phi, args.alpha), tilts)
-    stext, sinfo = sphereMesh.blockMeshDict(args.level)
+    stext, sinfo = sphereMesh.block_mesh_dict(args.level)
     hdr = mesh_gen.header(argv)
-    mesh_gen.writeWingAndBackground(
+    mesh_gen.write_wing_and_background(
         args.output, hdr, "Body-wing drone", m,
-        lambda j, r: refineActions(r, m.binfo["margins"][j]))
-    writeCase(os.path.join(args.output, "body"),
+        lambda j, r: refine_actions(r, m.binfo["margins"][j]))
+    write_case(os.path.join(args.output, "body"),
               textDict(stext.split("\n", 1)[1]),
               FOAM_HEADER % ("dictionary", "blockMeshDict") + hdr)
 

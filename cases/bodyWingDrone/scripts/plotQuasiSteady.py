@@ -39,7 +39,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 CASE = os.path.dirname(HERE)
 from flapfoam import flight_data
-from flapfoam.plotting import cycleAxes, plt, save
+from flapfoam.plotting import cycle_axes, plt, save
 
 # name, case folder, Allrun options, legend label, line style (Tz dashed:
 # its z(t) lies on TzRy's)
@@ -53,7 +53,7 @@ RUNS = [
 FREQUENCY = 20.0        # [Hz], the flapping entry of both cases
 
 
-def runAll(base, cycles):
+def run_all(base, cycles):
     """Allrun -model quasiSteady of each run; its wall time [s]."""
     walls = {}
     for name, case, options, _, _ in RUNS:
@@ -80,21 +80,21 @@ def trajectories(data, out):
         t, q = data[name]
         axes[0].plot(FREQUENCY*t, 1e3*q[:, 1], style, label=label)
         axes[1].plot(FREQUENCY*t, 1e3*q[:, 0], style, label=label)
-    cycleAxes(axes[0], "x [mm]", "Quasi-steady wings: horizontal position")
-    cycleAxes(axes[1], "z [mm]", "Vertical position")
+    cycle_axes(axes[0], "x [mm]", "Quasi-steady wings: horizontal position")
+    cycle_axes(axes[1], "z [mm]", "Vertical position")
     axes[0].set_xlabel("")
     axes[0].legend()
     save(fig, out, "quasiSteadyTrajectories.png")
 
 
-def bodyPitch(data, out):
+def body_pitch(data, out):
     """theta(t) of BW and TzRy."""
     fig, ax = plt.subplots(figsize=(8, 4))
     for (name, _, _, label, _) in RUNS:
         if name in ("bw", "bw-TzRy"):
             t, q = data[name]
             ax.plot(FREQUENCY*t, np.degrees(q[:, 2]), label=label)
-    cycleAxes(ax, "theta = q_2 [deg]", "Quasi-steady wings: body pitch")
+    cycle_axes(ax, "theta = q_2 [deg]", "Quasi-steady wings: body pitch")
     ax.legend()
     save(fig, out, "quasiSteadyBodyPitch.png")
 
@@ -114,7 +114,7 @@ def main():
     os.makedirs(base, exist_ok=True)
     os.makedirs(out, exist_ok=True)
 
-    walls = {} if a.noRun else runAll(base, a.cycles)
+    walls = {} if a.noRun else run_all(base, a.cycles)
     data = {}
     for name, _, _, _, _ in RUNS:
         folder = os.path.join(base, name)
@@ -130,7 +130,7 @@ def main():
               "mm%s" % (name, FREQUENCY*(t[-1] - t[0]), wall, 1e3*q[-1, 1],
                         1e3*q[-1, 0], pitch))
     trajectories(data, out)
-    bodyPitch(data, out)
+    body_pitch(data, out)
     print("plotQuasiSteady: wrote %s/quasiSteady{Trajectories,BodyPitch}.png"
           % out)
     return 0

@@ -66,7 +66,7 @@ def expansion(L, n, d0):
     return g**(n - 1)
 
 
-def blockMeshDict(level):
+def block_mesh_dict(level):
     """The blockMeshDict of the shell between the cubes of half side 1 and
     2 (straight edges: every radial block edge and grid line lies on a ray
     from the origin), graded along the rays, and the level's parameters;
@@ -144,7 +144,7 @@ def turn(v):
     return tuple(v[i]*c + kxv[i]*s + k[i]*kv*(1 - c) for i in range(3))
 
 
-def mapPoints(path, centre=(0.0, 0.0, 0.0)):
+def map_points(path, centre=(0.0, 0.0, 0.0)):
     """Map the points of the cube shell (an ascii polyMesh points file) onto
     the spherical shell: a point p with rho = max |p_i| in [1, 2] goes to
     the radius R1 + (rho - 1)(R2 - R1) along its ray, turned (see TURN_AXIS),
@@ -190,7 +190,7 @@ def main():
     ap.add_argument("-list", action="store_true")
     a = ap.parse_args()
     if a.map:
-        n = mapPoints(a.map, tuple(a.centre))
+        n = map_points(a.map, tuple(a.centre))
         print("sphereMesh: mapped %d points of %s" % (n, a.map),
               file=sys.stderr)
         return 0
@@ -201,7 +201,7 @@ def main():
     if a.level not in LEVELS:
         sys.exit("sphereMesh.py: level %s: one of %s"
                  % (a.level, ", ".join(LEVELS)))
-    text, info = blockMeshDict(a.level)
+    text, info = block_mesh_dict(a.level)
     if a.o:
         os.makedirs(os.path.dirname(os.path.abspath(a.o)), exist_ok=True)
         with open(a.o, "w") as f:

@@ -36,7 +36,7 @@ ERROR = {"theta2": (r"$|\theta_2 - \theta_{2,ref}|$ [rad]", False),
          "tau1": (r"$|\tau_1 - \tau_{1,ref}|$ / max $|\tau_{1,ref}|$", True)}
 
 
-def errorPanel(a, ref, runs, key):
+def error_panel(a, ref, runs, key):
     """|run - reference| of key (over max |reference| where ERROR says so),
     each integrator, with the acceptance limit and the end of its
     window."""
@@ -85,8 +85,8 @@ def plot_prescribed(case, out):
     a.set_title("torque of the driven joint")
     a.legend(fontsize=8)
 
-    errorPanel(ax[1, 0], ref, runs, "theta2")
-    errorPanel(ax[1, 1], ref, runs, "tau1")
+    error_panel(ax[1, 0], ref, runs, "theta2")
+    error_panel(ax[1, 1], ref, runs, "tau1")
 
     fig.suptitle(r"Double pendulum, $\theta_1 = A\cos(2\pi f t) - A$, "
                  r"A = 57 deg, f = 2 Hz: eABA vs Lagrange")

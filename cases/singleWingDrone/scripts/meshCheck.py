@@ -6,7 +6,7 @@
 
 import sys
 
-from flapfoam.mesh_checks import meshCheck
+from flapfoam.mesh_checks import mesh_check
 
 if __name__ == "__main__":
-    sys.exit(meshCheck())
+    sys.exit(mesh_check())

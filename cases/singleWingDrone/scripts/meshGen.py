@@ -66,7 +66,7 @@ from flapfoam.wing_mesh import COMPONENT, LEVELS
 
 
 def main(argv=None):
-    args = mesh_gen.parseArgs(__doc__, LEVELS, argv)
+    args = mesh_gen.parse_args(__doc__, LEVELS, argv)
     if args.list:
         for name in LEVELS:
             m = mesh_gen.build(name, COMPONENT)
@@ -78,7 +78,7 @@ def main(argv=None):
 
     m = mesh_gen.build(args.level, COMPONENT,
                        mesh_gen.pose(args.phi, args.alpha))
-    mesh_gen.writeWingAndBackground(args.output, mesh_gen.header(argv),
+    mesh_gen.write_wing_and_background(args.output, mesh_gen.header(argv),
                                    "Single-wing drone", m)
     # components in merge order (scripts/makeOversetMesh): the wing is the
     # master, so that its overset patch becomes the first patch

@@ -6,7 +6,7 @@
 
 import sys
 
-from flapfoam.mesh_checks import oversetCheck
+from flapfoam.mesh_checks import overset_check
 
 if __name__ == "__main__":
-    sys.exit(oversetCheck())
+    sys.exit(overset_check())
