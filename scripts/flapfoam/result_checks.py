@@ -277,8 +277,7 @@ def rows_summary(path):
                 rows.add(obj.shape[0])
                 bad[0] += int(np.sum(obj[()] == 999.0))
         f.visititems(visit)
-        times = " ".join("%g" % t for t in f["time"][:])
-    return "%s | %s %d" % (times, sorted(rows), bad[0])
+    return "%s | %s %d" % (flight_data_times(path), sorted(rows), bad[0])
 
 
 def hold_open(path, seconds, wait=30.0):

@@ -12,12 +12,11 @@ bandwidth) and flapfoam.scaling_validate (the committed model against both
 rounds by flapfoam.timed_rounds, its calibration reproduced)."""
 
 import fnmatch
-import os
 
 import numpy as np
 import pytest
 
-from flapfoam import rank_tables, scaling_model
+from flapfoam import rank_tables, scaling_model, scaling_validate
 
 HEADER = "FoamFile { version 2.0; format ascii; class %s; object %s; }\n"
 REPORT = """x: 2 ranks, 6 cells, 3 poses of "c", decomposition "d"
@@ -212,18 +211,13 @@ def test_step_of_an_overset_rank_report(costs):
 EARLY = ("scaling-16core:coarse/octree-oversetGraph-np*",
          "scaling-16core:coarse/octree-hierarchical-np2")
 NEW = "session2-round3"
-MEASURED = os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                        "..", "..", "bench", "scaling", "measured")
-ARCHIVES = [os.path.join(MEASURED, f) for f in (
-    "scaling-16core-coarse.tar.gz", "scaling-16core-medium.tar.gz",
-    "device-2026-11-26/session2-round3.tar.gz")]
-ROUNDS = os.path.join(MEASURED, "device-2026-11-26/session1/runTimed.log")
+ARCHIVES = scaling_validate.SESSIONS
+ROUNDS = scaling_validate.ROUNDS[0]
 
 
 @pytest.fixture(scope="module")
 def runs():
-    from flapfoam import scaling_validate as sv
-    return sv.read_archives(ARCHIVES, rounds=[ROUNDS])
+    return scaling_validate.read_archives(ARCHIVES, rounds=[ROUNDS])
 
 
 @pytest.fixture(scope="module")
