@@ -27,11 +27,7 @@ License
 
 Foam::graphPartitioner::graphPartitioner(const oversetGraphSettings& settings)
 :
-    library_(settings.partitioner()),
-    imbalance_(settings.imbalance()),
-    oversetImbalance_(settings.oversetImbalance()),
-    oversetWork_(settings.oversetWork()),
-    poseGroups_(settings.poseGroups())
+    settings_(settings)
 {}
 
 
@@ -47,7 +43,7 @@ Foam::labelList Foam::graphPartitioner::partition
     {
         return labelList(graph.nCells(), Zero);
     }
-    return library_ == library::metis
+    return settings_.partitioner() == library::metis
         ? metis(graph, nParts)
         : scotch(graph, nParts);
 }

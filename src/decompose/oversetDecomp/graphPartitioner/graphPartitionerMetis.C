@@ -50,7 +50,8 @@ Foam::labelList Foam::graphPartitioner::metisWeights
     // consecutive poses
     const labelListList& poseWork = graph.poseWork();
     const label nPoses = poseWork.size();
-    const label nGroups = poseGroups_ < 0 ? nPoses : min(poseGroups_, nPoses);
+    const label nGroups = settings_.poseGroups() < 0
+        ? nPoses : min(settings_.poseGroups(), nPoses);
     labelListList summed;
     if (nGroups && nGroups < nPoses)
     {
@@ -99,8 +100,12 @@ Foam::labelList Foam::graphPartitioner::metis
     idx_t nVertices = graph.nCells();
     idx_t nConstraints = 1;
     labelList vwgt(metisWeights(graph, nConstraints));
-    std::vector<real_t> ubvec(nConstraints, real_t(1 + oversetImbalance_));
-    ubvec[0] = real_t(1 + imbalance_);
+    std::vector<real_t> ubvec
+    (
+        nConstraints,
+        real_t(1 + settings_.oversetImbalance())
+    );
+    ubvec[0] = real_t(1 + settings_.imbalance());
     idx_t options[METIS_NOPTIONS];
     METIS_SetDefaultOptions(options);
     options[METIS_OPTION_NUMBERING] = 0;

@@ -50,7 +50,7 @@ Foam::labelList Foam::graphPartitioner::scotch
 ) const
 {
     const label n = graph.nCells();
-    const scalar workScale = oversetWork_/max(1, graph.nPoses());
+    const scalar workScale = settings_.oversetWork()/max(1, graph.nPoses());
     const scalar cellScale = 100;
     std::vector<SCOTCH_Num> velotab(n);
     for (label i = 0; i < n; ++i)
@@ -94,7 +94,7 @@ Foam::labelList Foam::graphPartitioner::scotch
     status = status ? status : SCOTCH_graphCheck(&scotchGraph);
     status = status ? status : SCOTCH_stratGraphMapBuild
     (
-        &strategy, SCOTCH_STRATBALANCE, nParts, imbalance_
+        &strategy, SCOTCH_STRATBALANCE, nParts, settings_.imbalance()
     );
     status = status ? status : SCOTCH_contextBindGraph
     (
