@@ -106,18 +106,18 @@ def find_entry(model, where, name):
     return found[0], motions[found[0]]
 
 
-def number(entry, key, entryName):
+def number(entry, key, entry_name):
     if key not in entry:
         fail("entry %s: key %s missing (their code reads it)"
-             % (entryName, key))
+             % (entry_name, key))
     try:
         return float(entry[key][0])
     except ValueError:
         fail("entry %s: %s %s is not a number"
-             % (entryName, key, " ".join(entry[key])))
+             % (entry_name, key, " ".join(entry[key])))
 
 
-class authorsEntry:
+class authors_entry:
     """Their controller entry's values and the flapFoam loops they make."""
 
     def __init__(self, name, entry, body):
@@ -235,7 +235,7 @@ def main(argv=None):
     elif body not in bodies:
         fail("-body %s: not a body of %s (bodies: %s)"
              % (body, where, " ".join(bodies)))
-    text = authorsEntry(name, entry, body).text(args.blend)
+    text = authors_entry(name, entry, body).text(args.blend)
     if args.o:
         with open(args.o, "w") as f:
             f.write(text)

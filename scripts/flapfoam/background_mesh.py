@@ -34,7 +34,7 @@ def background_cell_size(lev, bg):
 def background_block_mesh(lev, bg, env):
     side = bg["side"]
     c = np.asarray(bg["centre"], dtype=float)
-    N0, nRef = lev["N0"], lev["nRef"]
+    N0, n_ref = lev["N0"], lev["nRef"]
     h0 = side/N0
     bm = BlockMesh()
     verts = []
@@ -52,23 +52,23 @@ def background_block_mesh(lev, bg, env):
         bm.face("farField", b, side_)
 
     # nested refinement regions, finest last
-    h = [h0/2**j for j in range(nRef + 1)]     # h[j]: size after pass j
-    margins = [0.0]*(nRef + 1)
+    h = [h0/2**j for j in range(n_ref + 1)]     # h[j]: size after pass j
+    margins = [0.0]*(n_ref + 1)
     # a cell is selected when its centre is in the region: half a cell of
     # the pass's input size added to each margin
-    m = bg["finalMargin"]*h[nRef] + 0.5*h[nRef - 1]
-    margins[nRef] = m
-    for j in range(nRef - 1, 0, -1):
+    m = bg["finalMargin"]*h[n_ref] + 0.5*h[n_ref - 1]
+    margins[n_ref] = m
+    for j in range(n_ref - 1, 0, -1):
         m = m + lev.get("nBuffer", bg["nBuffer"])*h[j] \
             + 0.5*h[j - 1]
         margins[j] = m
     regions = []
-    for j in range(1, nRef + 1):
+    for j in range(1, n_ref + 1):
         m = margins[j]
         regions.append(dict(
             rA=env["rMax"] + m, z=env["zMax"] + m, yA=env["yA"] - m,
             rB=env["rB"] + m if env["rB"] > 0 else 0.0))
-    info = dict(h0=h0, h=h[nRef], nRef=nRef, N0=N0, margins=margins[1:],
+    info = dict(h0=h0, h=h[n_ref], nRef=n_ref, N0=N0, margins=margins[1:],
                 regions=regions, envelope=env)
     return bm, info
 

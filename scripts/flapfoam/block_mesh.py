@@ -54,12 +54,12 @@ def sizes_geometric(L, N, d0, d1=None, q=1.2):
     return s*L/s.sum()
 
 
-def n_cells_growth(L, d0, dEnd, q):
+def n_cells_growth(L, d0, d_end, q):
     """Cells to cover L starting at d0, growing by q up to dEnd, then
     uniform dEnd."""
     n, s, x = 0, d0, 0.0
     while x < L*(1 - 1e-9):
-        x += min(s, dEnd)
+        x += min(s, d_end)
         s *= q
         n += 1
     return n
@@ -150,8 +150,8 @@ class BlockMesh:
         self.blocks.append((list(verts), zone, n))
         return len(self.blocks) - 1
 
-    def face(self, patch, blockI, side):
-        verts = self.blocks[blockI][0]
+    def face(self, patch, block_i, side):
+        verts = self.blocks[block_i][0]
         self.patches[patch][1].append(
             tuple(verts[i] for i in self.HEX_FACES[side]))
 

@@ -68,17 +68,17 @@ class Chain:
         self._S = np.tril(np.ones((n, n)))
         tail = np.cumsum(self.masses[::-1])[::-1]
         j, k = np.meshgrid(range(n), range(n), indexing="ij")
-        self._muLL = tail[np.maximum(j, k)]*np.outer(self.lengths,
+        self._mu_ll = tail[np.maximum(j, k)]*np.outer(self.lengths,
                                                     self.lengths)
         self._gravity = self.g*tail*self.lengths
 
-    def equations(self, q, qDot):
+    def equations(self, q, q_dot):
         """The mass matrix M_q and the bias h_q (velocity products and
         gravity) in joint coordinates: M_q qDdot + h_q = tau."""
-        phi, phiDot = self._S @ q, self._S @ qDot
+        phi, phi_dot = self._S @ q, self._S @ q_dot
         d = phi[:, None] - phi[None, :]
-        M = self._muLL*np.cos(d)
-        c = (self._muLL*np.sin(d)) @ phiDot**2 + self._gravity*np.sin(phi)
+        M = self._mu_ll*np.cos(d)
+        c = (self._mu_ll*np.sin(d)) @ phi_dot**2 + self._gravity*np.sin(phi)
         return self._S.T @ M @ self._S, self._S.T @ c
 
     def prescribed_state(self, t):
@@ -86,49 +86,49 @@ class Chain:
         rows = [self.prescribed[j](t) for j in self.fixed]
         return tuple(np.array([r[i] for r in rows]) for i in range(3))
 
-    def accelerations(self, t, q, qDot):
+    def accelerations(self, t, q, q_dot):
         """qDdot of every joint and tau of every joint (zero on the free
         ones) at the state, the prescribed joints at t."""
-        M, h = self.equations(q, qDot)
-        qDdot = np.zeros(len(q))
+        M, h = self.equations(q, q_dot)
+        q_ddot = np.zeros(len(q))
         f, p = self.free, self.fixed
         if p:
-            qDdot[p] = self.prescribed_state(t)[2]
-        rhs = -h[f] - M[np.ix_(f, p)] @ qDdot[p]
-        qDdot[f] = np.linalg.solve(M[np.ix_(f, f)], rhs)
-        tau = M @ qDdot + h
+            q_ddot[p] = self.prescribed_state(t)[2]
+        rhs = -h[f] - M[np.ix_(f, p)] @ q_ddot[p]
+        q_ddot[f] = np.linalg.solve(M[np.ix_(f, f)], rhs)
+        tau = M @ q_ddot + h
         tau[f] = 0.0
-        return qDdot, tau
+        return q_ddot, tau
 
     def full_state(self, t, y):
         """q, qDot of every joint from the free joints' y = (q_f, qDot_f)."""
         n, nf = len(self.lengths), len(self.free)
-        q, qDot = np.zeros(n), np.zeros(n)
-        q[self.free], qDot[self.free] = y[:nf], y[nf:]
+        q, q_dot = np.zeros(n), np.zeros(n)
+        q[self.free], q_dot[self.free] = y[:nf], y[nf:]
         if self.fixed:
-            qp, qDotp, _ = self.prescribed_state(t)
-            q[self.fixed], qDot[self.fixed] = qp, qDotp
-        return q, qDot
+            qp, q_dot_p, _ = self.prescribed_state(t)
+            q[self.fixed], q_dot[self.fixed] = qp, q_dot_p
+        return q, q_dot
 
     def rhs(self, t, y):
-        q, qDot = self.full_state(t, y)
-        qDdot, _ = self.accelerations(t, q, qDot)
-        return np.concatenate([qDot[self.free], qDdot[self.free]])
+        q, q_dot = self.full_state(t, y)
+        q_ddot, _ = self.accelerations(t, q, q_dot)
+        return np.concatenate([q_dot[self.free], q_ddot[self.free]])
 
-    def energy(self, q, qDot):
+    def energy(self, q, q_dot):
         """T + V, zero hanging at rest."""
-        M, _ = self.equations(q, qDot)
+        M, _ = self.equations(q, q_dot)
         phi = self._S @ q
-        return 0.5*qDot @ M @ qDot \
+        return 0.5*q_dot @ M @ q_dot \
             + float(self._gravity @ (1 - np.cos(phi)))
 
-    def solve(self, q0, qDot0, times):
+    def solve(self, q0, q_dot0, times):
         """q and qDot of every joint at the times (rows), from the free
         joints' q0, qDot0 at times[0] (the prescribed ones' entries of q0,
         qDot0 are ignored: their motions give them)."""
         times = np.asarray(times, dtype=float)
         y0 = np.concatenate([np.asarray(q0, float)[self.free],
-                             np.asarray(qDot0, float)[self.free]])
+                             np.asarray(q_dot0, float)[self.free]])
         sol = solve_ivp(self.rhs, (times[0], times[-1]), y0, t_eval=times,
                         method="DOP853", rtol=1e-12, atol=1e-12)
         if not sol.success:

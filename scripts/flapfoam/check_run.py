@@ -94,7 +94,7 @@ def joints(case, name="eABAMeshMotion"):
     base = os.path.join(case, "postProcessing", name)
     if not start_folders(base):
         sys.exit("checkRun: no %s/<time>/joints.dat" % base)
-    return joined_table(base, "joints.dat", keepEarlierAtStart=False)
+    return joined_table(base, "joints.dat", keep_earlier_at_start=False)
 
 
 def rel_diff(a, b, floor):
@@ -114,41 +114,41 @@ def check_prescribed(case, name, tol, tol_table):
     if not imposed:
         return report(False, "prescribed", "no imposedMotion entries")
 
-    def errors(t, q, qDot, qDdot, ev):
+    def errors(t, q, q_dot, q_ddot, ev):
         w = 2.0*math.pi*ev.frequency
-        qa, qDa, qDDa = ev(t)
+        qa, q_dot_a, q_ddot_a = ev(t)
         return (np.abs(q - qa)/ev.amplitude,
-                np.abs(qDot - qDa)/(ev.amplitude*w),
-                np.abs(qDdot - qDDa)/(ev.amplitude*w*w))
+                np.abs(q_dot - q_dot_a)/(ev.amplitude*w),
+                np.abs(q_ddot - q_ddot_a)/(ev.amplitude*w*w))
 
     # full-precision states
     sts = states(case)
-    eState = np.zeros(3)
+    e_state = np.zeros(3)
     for s in sts:
         for qi, ev in imposed.items():
             e = errors(s["t"], s["q"][qi], s["qDot"][qi], s["qDdot"][qi],
                        ev)
-            eState = np.maximum(eState, [float(x) for x in e])
+            e_state = np.maximum(e_state, [float(x) for x in e])
 
     # every row of joints.dat
     cols, J = joints(case)
     c = {n: i for i, n in enumerate(cols)}
-    eTable = np.zeros(3)
+    e_table = np.zeros(3)
     for qi, ev in imposed.items():
         e = errors(J[:, 0], J[:, c["q_%d" % qi]], J[:, c["qDot_%d" % qi]],
                    J[:, c["qDdot_%d" % qi]], ev)
-        eTable = np.maximum(eTable, [float(x.max()) for x in e])
+        e_table = np.maximum(e_table, [float(x.max()) for x in e])
 
-    ok = len(sts) > 0 and eState.max() <= tol \
-        and eTable.max() <= tol_table
+    ok = len(sts) > 0 and e_state.max() <= tol \
+        and e_table.max() <= tol_table
     return report(ok, name or "prescribed",
                   "joints %s: state files (17 digits, %d steps) max error "
                   "q %.2e qDot %.2e qDdot %.2e (tol %g); joints.dat (12 "
                   "digits, %d rows) q %.2e qDot %.2e qDdot %.2e (tol %g); "
                   "error = |sim - analytic|/(A omega^k)"
                   % ("/".join("q_%d" % q for q in sorted(imposed)), len(sts),
-                     eState[0], eState[1], eState[2], tol, len(J),
-                     eTable[0], eTable[1], eTable[2], tol_table))
+                     e_state[0], e_state[1], e_state[2], tol, len(J),
+                     e_table[0], e_table[1], e_table[2], tol_table))
 
 
 SOLVE_PARTS = ("pimplePressureSolve", "pimpleMomentumSolve",
@@ -198,21 +198,21 @@ def check_timers(case, name, tol, n_startup):
                       "start-up rows")
     total = np.array([r["total"] for r in rows])
     parts = np.array([r["rbd"] + r["overset"] + r["pimple"] for r in rows])
-    closureMean = abs(1.0 - parts.mean()/total.mean())
-    perStep = np.abs(total - parts)/total
+    closure_mean = abs(1.0 - parts.mean()/total.mean())
+    per_step = np.abs(total - parts)/total
     share = {k: np.mean([r[k] for r in rows])/total.mean()
              for k in ("rbd", "overset", "pimple")}
     ranks = [r for f in files for r in step_timers.read_ranks(
         os.path.join(os.path.dirname(f), "stepTimersRanks.dat"))]
     solves = pimple_parts(rows, ranks)
-    return report(closureMean <= tol and solves is not None
+    return report(closure_mean <= tol and solves is not None
                   and solves[1], name or "timers",
                   "%d steps: |1 - mean(rbd+overset+pimple)/mean(total)| = "
                   "%.2f %% (tol %g %%), per-step max %.2f %%; mean total "
                   "%.3g s/step, shares rbd %.2f %% overset %.1f %% pimple "
                   "%.1f %%; %s"
-                  % (len(rows), 100*closureMean, 100*tol,
-                     100*perStep.max(), total.mean(), 100*share["rbd"],
+                  % (len(rows), 100*closure_mean, 100*tol,
+                     100*per_step.max(), total.mean(), 100*share["rbd"],
                      100*share["overset"], 100*share["pimple"],
                      "no pimple parts (solves, laps, pIterations1)"
                      if solves is None else
@@ -286,24 +286,24 @@ def check_compare(a, b, name, want):
         floor = 1e-3*np.abs(A[:, i]).max() + 1e-300
         worst[col] = float(rel_diff(A[ia, i], B[ib, k], floor).max())
     text = ", ".join("%s %.1e" % (k, v) for k, v in worst.items())
-    maxRel = max(worst.values())
+    max_rel = max(worst.values())
 
     if want.state:
         last = state_differences(a, b, ca, A)
         if last is None:
             return report(False, name or "compare",
                           "no rigidBodyMotionState at a common last time")
-        t, sWorst = last
-        worstKey = max(sWorst, key=sWorst.get)
+        t, s_worst = last
+        worst_key = max(s_worst, key=s_worst.get)
         text += "; state at t = %g (17 digits): max %.1e (%s), q %s" % (
-            t, sWorst[worstKey], worstKey,
-            " ".join("%.1e" % v for k, v in sWorst.items()
+            t, s_worst[worst_key], worst_key,
+            " ".join("%.1e" % v for k, v in s_worst.items()
                      if k.startswith("q_")))
-        maxRel = max(maxRel, max(sWorst.values()))
+        max_rel = max(max_rel, max(s_worst.values()))
 
-    return report(maxRel <= want.tol, name or "compare",
+    return report(max_rel <= want.tol, name or "compare",
                   "%s rows (%d): max relative difference %.2e (tol %g): %s"
-                  % (want.rows, len(ia), maxRel, want.tol, text))
+                  % (want.rows, len(ia), max_rel, want.tol, text))
 
 
 def check_initial(case, name, q, qdot_sign, tol):
@@ -342,16 +342,16 @@ def check_rbs(a, b, name, tol):
                       "rows do not align: %d eABAMeshMotion, %d "
                       "rigidBodySimulate, %d common" % (len(A), len(B),
                                                          len(ia)))
-    worst, worstCol = 0.0, None
+    worst, worst_col = 0.0, None
     for i, col in enumerate(ca[1:], start=1):
         floor = 1e-3*np.abs(A[:, i]).max() + 1e-300
         r = float(rel_diff(A[ia, i], B[ib, i], floor).max())
         if r > worst:
-            worst, worstCol = r, col
+            worst, worst_col = r, col
     return report(worst <= tol, name or "rbs",
                   "%d rows x %d columns: max relative difference %.2e (%s) "
                   "(tol %g; eABAMeshMotion writes 12 digits)"
-                  % (len(ia), len(ca) - 1, worst, worstCol, tol))
+                  % (len(ia), len(ca) - 1, worst, worst_col, tol))
 
 
 def dict_leaves(d, prefix=""):
@@ -386,10 +386,10 @@ def check_dictionary(run_file, given_file, name, changed):
     bad = [k for k in sorted(given) if k not in changed and k != "FoamFile/note"
            and not same_tokens(given[k], run.get(k, []))]
     missing = sorted(changed - set(run))
-    nNumbers = sum(1 for k in given if k not in changed for t in given[k]
+    n_numbers = sum(1 for k in given if k not in changed for t in given[k]
                    if re.match(r"^[-+]?[0-9.]+([eE][-+]?[0-9]+)?$", t))
     text = ("%s: %d entries of %s (%d numbers) as given%s"
-            % (run_file, len(given) - len(changed), given_file, nNumbers,
+            % (run_file, len(given) - len(changed), given_file, n_numbers,
                ", changed as asked: " + " ".join(sorted(changed))
                if changed else ""))
     if bad or missing:
@@ -412,16 +412,16 @@ def main(argv=None):
     p = sub.add_parser("prescribed")
     p.add_argument("case")
     p.add_argument("-tol", type=float, default=1e-12)
-    p.add_argument("-tolTable", type=float, default=1e-11)
+    p.add_argument("-tolTable", dest="tol_table", type=float, default=1e-11)
     p.set_defaults(func=lambda a: check_prescribed(
-        a.case, a.name, a.tol, a.tolTable))
+        a.case, a.name, a.tol, a.tol_table))
 
     p = sub.add_parser("timers")
     p.add_argument("case")
     p.add_argument("-tol", type=float, default=0.05)
-    p.add_argument("-nStartup", type=int, default=2)
+    p.add_argument("-nStartup", dest="n_startup", type=int, default=2)
     p.set_defaults(func=lambda a: check_timers(
-        a.case, a.name, a.tol, a.nStartup))
+        a.case, a.name, a.tol, a.n_startup))
 
     p = sub.add_parser("compare")
     p.add_argument("a")
@@ -438,10 +438,10 @@ def main(argv=None):
     p = sub.add_parser("initial")
     p.add_argument("case")
     p.add_argument("-q", required=True)
-    p.add_argument("-qDotSign", default=None)
+    p.add_argument("-qDotSign", dest="q_dot_sign", default=None)
     p.add_argument("-tol", type=float, default=1e-12)
     p.set_defaults(func=lambda a: check_initial(
-        a.case, a.name, a.q, a.qDotSign, a.tol))
+        a.case, a.name, a.q, a.q_dot_sign, a.tol))
 
     p = sub.add_parser("dictionary")
     p.add_argument("run")

@@ -60,22 +60,22 @@ def cycle_means(t, C, period):
 
 def compare(cfd, qs, period):
     """Rows of the cycle table and the trajectory differences."""
-    tC, qC, _, cC, _ = cfd
-    tQ, qQ, _, cQ, _ = qs
-    if tQ[-1] < tC[-1] - 1e-9:
+    t_c, q_c, _, c_c, _ = cfd
+    t_q, q_q, _, c_q, _ = qs
+    if t_q[-1] < t_c[-1] - 1e-9:
         sys.exit("compareModels: the QS run ends at t = %g s, before the"
-                 " CFD run's %g s" % (tQ[-1], tC[-1]))
+                 " CFD run's %g s" % (t_q[-1], t_c[-1]))
     rows = []
-    for (k, cx, cz), (_, qx, qz) in zip(cycle_means(tC, cC, period),
-                                        cycle_means(tQ[tQ <= tC[-1] + 1e-12],
-                                                   cQ[tQ <= tC[-1] + 1e-12],
-                                                   period)):
+    within = t_q <= t_c[-1] + 1e-12
+    for (k, cx, cz), (_, qx, qz) in zip(
+            cycle_means(t_c, c_c, period),
+            cycle_means(t_q[within], c_q[within], period)):
         rows.append((k, cx, qx, cz, qz, cz/qz))
     diffs = {}
     for name, j in (("x", 1), ("z", 0)):
-        qsAt = np.interp(tC, tQ, qQ[:, j])
-        scale = np.abs(qQ[tQ <= tC[-1] + 1e-12, j]).max()
-        diffs[name] = (np.abs(qC[:, j] - qsAt).max(), scale)
+        qs_at = np.interp(t_c, t_q, q_q[:, j])
+        scale = np.abs(q_q[t_q <= t_c[-1] + 1e-12, j]).max()
+        diffs[name] = (np.abs(q_c[:, j] - qs_at).max(), scale)
     return rows, diffs
 
 
@@ -97,13 +97,13 @@ def table(rows, diffs, t):
 
 
 def plots(cfd, qs, period, out):
-    tC, qC, qDotC, cC, _ = cfd
-    tQ, qQ, _, cQ, _ = qs
-    sel = tQ <= tC[-1] + 1e-12
+    t_c, q_c, q_dot_c, c_c, _ = cfd
+    t_q, q_q, _, c_q, _ = qs
+    sel = t_q <= t_c[-1] + 1e-12
     fig, ax = plt.subplots(figsize=(8, 4.5))
-    shade_downstrokes(ax, tC/period, qDotC[:, 2])
-    for C, t, style, label in ((cC, tC, "-", "CFD"),
-                               (cQ[sel], tQ[sel], "--", "QS")):
+    shade_downstrokes(ax, t_c/period, q_dot_c[:, 2])
+    for C, t, style, label in ((c_c, t_c, "-", "CFD"),
+                               (c_q[sel], t_q[sel], "--", "QS")):
         ax.plot(t/period, C[:, 0], "C0" + style, label="C_xI " + label)
         ax.plot(t/period, C[:, 1], "C1" + style, label="C_zI " + label)
     cycle_axes(ax, "C = F / (0.5 rho S U_ref^2)",
@@ -112,8 +112,8 @@ def plots(cfd, qs, period, out):
     save(fig, out, "compareModels-coefficients.png")
     fig, ax = plt.subplots(figsize=(8, 4.5))
     for j, name, colour in ((1, "x", "C0"), (0, "z", "C1")):
-        ax.plot(tC/period, 1e3*qC[:, j], colour + "-", label=name + " CFD")
-        ax.plot(tQ[sel]/period, 1e3*qQ[sel, j], colour + "--",
+        ax.plot(t_c/period, 1e3*q_c[:, j], colour + "-", label=name + " CFD")
+        ax.plot(t_q[sel]/period, 1e3*q_q[sel, j], colour + "--",
                 label=name + " QS")
     cycle_axes(ax, "[mm]", "Trajectory: CFD and quasi-steady")
     ax.legend(fontsize=8)

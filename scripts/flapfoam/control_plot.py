@@ -137,8 +137,8 @@ class Term:
             raise ControlPlotError("%s/quantity %s: not allowed (one of: %s)"
                                    % (where, self.quantity,
                                       " ".join(QUANTITIES)))
-        self.setPoint = set_point_function(tokens, where + "/setPoint")
-        _, self.scale, self.unit, self.si, self.defaultBand = \
+        self.set_point = set_point_function(tokens, where + "/setPoint")
+        _, self.scale, self.unit, self.si, self.default_band = \
             QUANTITIES[self.quantity]
 
     def measure(self, data):
@@ -200,7 +200,7 @@ class Run:
                                    % case)
         self.t = np.asarray(data["time"], dtype=float)
         self.measures = {s.label: s.measure(data) for s in self.terms}
-        self.errors = {s.label: self.measures[s.label] - s.setPoint(self.t)
+        self.errors = {s.label: self.measures[s.label] - s.set_point(self.t)
                        for s in self.terms}
         control = data.get("control", np.zeros((len(self.t), 0)))
         self.control = {c: control[:, i] for i, c in enumerate(columns)}
@@ -239,7 +239,7 @@ def error_metrics(t, e, band, settle):
 def parse_bands(text, terms):
     """{label: band} of -band (positional or LABEL=B), the defaults
     elsewhere."""
-    bands = {s.label: s.defaultBand for s in terms}
+    bands = {s.label: s.default_band for s in terms}
     if not text:
         return bands
     labels = list(bands)
@@ -265,12 +265,12 @@ def parse_bands(text, terms):
     return bands
 
 
-def metric_rows(runs, bandText, settle):
+def metric_rows(runs, band_text, settle):
     """The rows of the metrics table: one per run and controlled
     quantity."""
     rows = []
     for r in runs:
-        bands = parse_bands(bandText, r.terms)
+        bands = parse_bands(band_text, r.terms)
         for s in r.terms:
             row = {"run": r.name, "quantity": s.label, "measure":
                    "%s %s %s" % (s.body, s.quantity, "xyz"[s.component]),
@@ -306,7 +306,7 @@ def plot_states(runs, out, bands, settle):
     for ax, label in zip(axes[:, 0], labels):
         for i, r in enumerate(runs):
             for s in (s for s in r.terms if s.label == label):
-                unit, c, ref = s.unit, "C%d" % (i % 10), s.setPoint(r.t)
+                unit, c, ref = s.unit, "C%d" % (i % 10), s.set_point(r.t)
                 ax.plot(r.t, s.scale*r.measures[label], color=c, lw=0.8,
                         label=r.name)
                 ax.plot(r.t, s.scale*ref, "--", color=c, lw=0.8)

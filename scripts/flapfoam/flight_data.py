@@ -133,11 +133,11 @@ def tables(case):
         return None
     _, d = load(case)
     t = d["time"][:, None]
-    q, qDot, qDdot = d["joints/q"], d["joints/qDot"], d["joints/qDdot"]
+    q, q_dot, q_ddot = d["joints/q"], d["joints/qDot"], d["joints/qDdot"]
     jcols, jdata = ["time"], [t]
     for i in range(q.shape[1]):
         jcols += ["q_%d" % i, "qDot_%d" % i, "qDdot_%d" % i]
-        jdata += [q[:, i:i+1], qDot[:, i:i+1], qDdot[:, i:i+1]]
+        jdata += [q[:, i:i+1], q_dot[:, i:i+1], q_ddot[:, i:i+1]]
     if "joints/tau" in d:
         # column names tau_<q index>, as the dataset's columns
         import h5py
@@ -341,23 +341,23 @@ def main(argv=None):
     c.add_argument("-rows", type=int)
     c.add_argument("-attr", action="append", default=[])
     c.add_argument("-log")
-    c.add_argument("-variableStep", action="store_true")
+    c.add_argument("-variableStep", dest="variable_step", action="store_true")
     c.add_argument("-zero", action="append", default=[])
     c.add_argument("-moving", action="append", default=[])
     m = sub.add_parser("compare")
     m.add_argument("ref")
     m.add_argument("case")
     m.add_argument("-tol", type=float, default=0.0)
-    m.add_argument("-timeTol", type=float, default=0.0)
+    m.add_argument("-timeTol", dest="time_tol", type=float, default=0.0)
     m.add_argument("-datasets")
     m.add_argument("-exclude", default="timers")
     a = ap.parse_args(argv)
     if a.command == "check":
         return check(a.case, FileChecks(
             a.rows, dict(kv.split("=", 1) for kv in a.attr), a.log,
-            a.variableStep, a.zero, a.moving))
+            a.variable_step, a.zero, a.moving))
     return compare(a.ref, a.case, Tolerances(
-        a.tol, a.timeTol, a.datasets.split(",") if a.datasets else None,
+        a.tol, a.time_tol, a.datasets.split(",") if a.datasets else None,
         set(a.exclude.split(",")) if a.exclude else set()))
 
 

@@ -77,19 +77,19 @@ class Template:
     the length of a cycle; prepare() then puts placeholder words for the
     swept gains into its dictionary, filled in per point."""
 
-    def __init__(self, case, variant, deltaT, workDir):
+    def __init__(self, case, variant, delta_t, work_dir):
         allrun = os.path.join(case, "Allrun")
         if not os.path.isfile(allrun):
             raise SweepError("-case %s: no Allrun there (allowed: a drone"
                              " case folder, e.g. cases/bodyWingDrone)"
                              % case)
-        self.folder = os.path.join(workDir, "template")
+        self.folder = os.path.join(work_dir, "template")
         shutil.rmtree(self.folder, ignore_errors=True)
-        log = os.path.join(workDir, "log.template")
+        log = os.path.join(work_dir, "log.template")
         with open(log, "w") as out:
             rc = subprocess.call([allrun, "-model", "quasiSteady",
                                   "-variant", variant, "-cycles", "1",
-                                  "-deltaT", repr(deltaT), "-case",
+                                  "-deltaT", repr(delta_t), "-case",
                                   self.folder, "-noPlot"], stdout=out,
                                  stderr=subprocess.STDOUT,
                                  stdin=subprocess.DEVNULL)
@@ -103,9 +103,9 @@ class Template:
         self.bounds = {"%s.%s" % (s.label, g): (-math.inf, math.inf)
                        for s in self.terms for g in GAINS}
         self.dict = os.path.join(self.folder, "constant", "dynamicMeshDict")
-        self.controlDict = os.path.join(self.folder, "system", "controlDict")
+        self.control_dict = os.path.join(self.folder, "system", "controlDict")
         self.period = float(foam_dictionary("-entry", "endTime", "-value",
-                                           self.controlDict))
+                                           self.control_dict))
         self.names = []
         self.text = None
 
@@ -119,9 +119,9 @@ class Template:
                            "%s/terms/%s/%s" % (loop, term, gain), "-set",
                            "gainSweep_%d" % i, self.dict)
         foam_dictionary("-entry", "endTime", "-set", repr(cycles*self.period),
-                       self.controlDict)
+                       self.control_dict)
         foam_dictionary("-entry", "functions/stepTimers", "-remove",
-                       self.controlDict)
+                       self.control_dict)
         with open(self.dict) as f:
             self.text = f.read()
 
@@ -144,15 +144,15 @@ class GainSweep(Sweep):
     copy of the template run by rigidBodySimulate, measured by
     controlPlot."""
 
-    def __init__(self, template, workDir, bands, settle, keep=False):
-        Sweep.__init__(self, template, workDir, None, None, keep)
+    def __init__(self, template, work_dir, bands, settle, keep=False):
+        Sweep.__init__(self, template, work_dir, None, None, keep)
         self.bands = bands
         self.settle = settle
 
     def run(self, name, values):
         """{results} of the point values ({name: value}); status failed
         (metrics NaN) where rigidBodySimulate fails."""
-        case = os.path.join(self.workDir, name)
+        case = os.path.join(self.work_dir, name)
         shutil.rmtree(case, ignore_errors=True)
         self.model.write(case, values)
         start = time.time()
@@ -261,7 +261,7 @@ def arguments(argv):
                            "cases/bodyWingDrone")
     parser.add_argument("-grid", required=True)
     parser.add_argument("-cycles", type=int, default=20)
-    parser.add_argument("-deltaT", type=float, default=1e-4)
+    parser.add_argument("-deltaT", dest="delta_t", type=float, default=1e-4)
     parser.add_argument("-np", type=int, default=2)
     parser.add_argument("-case", default=default)
     parser.add_argument("-variant", default="control")
@@ -276,8 +276,8 @@ def arguments(argv):
         if getattr(args, name) < least:
             parser.error("-%s %d: not allowed (an integer >= %d)"
                          % (name, getattr(args, name), least))
-    if not (args.deltaT > 0 and math.isfinite(args.deltaT)):
-        parser.error("-deltaT %g: not allowed (> 0)" % args.deltaT)
+    if not (args.delta_t > 0 and math.isfinite(args.delta_t)):
+        parser.error("-deltaT %g: not allowed (> 0)" % args.delta_t)
     return args
 
 
@@ -286,7 +286,7 @@ def main(argv=None):
     try:
         os.makedirs(args.dir, exist_ok=True)
         template = Template(os.path.abspath(args.case), args.variant,
-                            args.deltaT, os.path.abspath(args.dir))
+                            args.delta_t, os.path.abspath(args.dir))
         grid = parse_grid(args.grid, template.bounds)
         pair = map_pair(grid, args.map)
         bands = control_plot.parse_bands(args.band, template.terms)
@@ -303,7 +303,7 @@ def main(argv=None):
         write_table(args.o + ".csv", rows, list(grid))
         print("gainSweep: %d points (%d cycles, deltaT %g s, %d at a time)"
               " in %.1f s wall, %.2f s per run: %s.csv" % (
-                  len(rows), args.cycles, args.deltaT, args.np,
+                  len(rows), args.cycles, args.delta_t, args.np,
                   time.time() - start,
                   np.mean([r["seconds"] for r in rows]), args.o))
         title = "%s -variant %s: %d points, %d cycles, T = %g s" % (

@@ -179,13 +179,13 @@ def chain_of(system):
             prescribed[int(entry["joint"][0])] = Harmonic(
                 *(float(entry[k][0]) for k in
                   ("amplitude", "frequency", "phase", "offset")))
-    q0, qDot0 = np.zeros(len(bodies)), np.zeros(len(bodies))
+    q0, q_dot0 = np.zeros(len(bodies)), np.zeros(len(bodies))
     state = os.path.join(case, "0", "uniform", "rigidBodyMotionState")
     if os.path.isfile(state):
         s = read_state(state)
-        q0, qDot0 = np.asarray(s["q"], float), np.asarray(s["qDot"], float)
+        q0, q_dot0 = np.asarray(s["q"], float), np.asarray(s["qDot"], float)
     g = -float(coeffs["g"][-2])
-    return Chain(lengths, masses, g=g, prescribed=prescribed), q0, qDot0
+    return Chain(lengths, masses, g=g, prescribed=prescribed), q0, q_dot0
 
 
 @functools.lru_cache(maxsize=None)
@@ -196,8 +196,8 @@ def reference(system):
     n = int(round(system.end_time/system.write))
     times = np.linspace(0, n*system.write, n + 1)
     if system.unit == "rad":
-        chain, q0, qDot0 = chain_of(system)
-        q, _ = chain.solve(q0, qDot0, times)
+        chain, q0, q_dot0 = chain_of(system)
+        q, _ = chain.solve(q0, q_dot0, times)
         return times, np.cumsum(q, axis=1)
     coeffs = multibody_coeffs(os.path.join(project_dir(), system.case,
                                           "constant", system.dict_name))
@@ -303,7 +303,8 @@ def main(argv=None):
                         choices=list(SYSTEMS))
     parser.add_argument("-solvers", nargs="+", default=list(SOLVERS),
                         choices=SOLVERS)
-    parser.add_argument("-nIter", nargs="+", default=list(NITERS),
+    parser.add_argument("-nIter", dest="n_iter", nargs="+",
+                        default=list(NITERS),
                         choices=NITERS)
     parser.add_argument("-dir", default="/tmp/flapFoam-integratorOrder")
     parser.add_argument("-jobs", type=int, default=os.cpu_count() or 1)
@@ -311,7 +312,7 @@ def main(argv=None):
     args = parser.parse_args(argv)
     combinations = [Combination(SYSTEMS[s], solver, n)
                     for s in args.systems for solver in args.solvers
-                    for n in args.nIter]
+                    for n in args.n_iter]
     os.makedirs(args.dir, exist_ok=True)
     evaluate(combinations, args.dir, max(1, args.jobs))
     for c in combinations:

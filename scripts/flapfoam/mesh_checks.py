@@ -109,8 +109,8 @@ def check_wing_area(pm, bnd, gen, report, res):
     w = bnd["wing"]
     faces = np.arange(w["startFace"], w["startFace"] + w["nFaces"])
     Sf = fm.face_areas_vec(pts, offs, verts, faces)
-    magSf = np.linalg.norm(Sf, axis=1)
-    area = float(magSf.sum())
+    mag_sf = np.linalg.norm(Sf, axis=1)
+    area = float(mag_sf.sum())
     exact = geo.wing_area()
     err = area/exact - 1
     res.update(wing_area=area, wingAreaAnalytic=exact, wingAreaError=err,
@@ -126,17 +126,17 @@ def check_wing_area(pm, bnd, gen, report, res):
         with open(gen) as fh:
             pose = json.load(fh).get("pose", {})
     Rpose = geo.pose_matrix(pose.get("phiDeg", 0.0), pose.get("alphaDeg", 0.0))
-    nz = np.abs((Sf @ Rpose)[:, 2])/magSf      # |n . z_wing|
-    flat = float(magSf[nz > 0.5].sum())
+    nz = np.abs((Sf @ Rpose)[:, 2])/mag_sf      # |n . z_wing|
+    flat = float(mag_sf[nz > 0.5].sum())
     band = area - flat
-    flatExact = 2*geo.planform_area()
-    bandExact = exact - flatExact
-    res.update(topBottomArea=flat, topBottomAnalytic=flatExact,
-               edgeArea=band, edgeAnalytic=bandExact)
+    flat_exact = 2*geo.planform_area()
+    band_exact = exact - flat_exact
+    res.update(topBottomArea=flat, topBottomAnalytic=flat_exact,
+               edgeArea=band, edgeAnalytic=band_exact)
     print("     top + bottom %.6e m^2 (2 S = %.6e, %+.3f %%), edge band "
           "%.6e m^2 (t (P/2 + c_r) = %.6e, %+.3f %%)" % (
-              flat, flatExact, 100*(flat/flatExact - 1), band, bandExact,
-              100*(band/bandExact - 1)))
+              flat, flat_exact, 100*(flat/flat_exact - 1), band, band_exact,
+              100*(band/band_exact - 1)))
 
 
 def mesh_check(argv=None):
@@ -189,8 +189,8 @@ def cell_centres_approx(points, mesh, n_cells):
     cnt = np.zeros(n_cells)
     np.add.at(acc, owner, fc)
     np.add.at(cnt, owner, 1)
-    nInt = len(neighbour)
-    np.add.at(acc, neighbour, fc[:nInt])
+    n_int = len(neighbour)
+    np.add.at(acc, neighbour, fc[:n_int])
     np.add.at(cnt, neighbour, 1)
     return acc/cnt[:, None], fc
 
@@ -251,8 +251,8 @@ class MeshAddressing:
     owner: object
     neighbour: object
     n_cells: int
-    wingPoints: object
-    ovCells: object
+    wing_points: object
+    ov_cells: object
 
 
 def mesh_addressing(case):
@@ -270,26 +270,26 @@ def mesh_addressing(case):
     n_cells = fm.read_n_cells(os.path.join(pm, "owner"))
     bnd = fm.read_boundary(os.path.join(pm, "boundary"))
     w, o = bnd["wing"], bnd["oversetPatch"]
-    wingFaces = np.arange(w["startFace"], w["startFace"] + w["nFaces"])
-    wingPoints = np.unique(np.concatenate(
-        [verts[offs[f]:offs[f + 1]] for f in wingFaces]))
-    ovCells = np.unique(owner[o["startFace"]:o["startFace"] + o["nFaces"]])
+    wing_faces = np.arange(w["startFace"], w["startFace"] + w["nFaces"])
+    wing_points = np.unique(np.concatenate(
+        [verts[offs[f]:offs[f + 1]] for f in wing_faces]))
+    ov_cells = np.unique(owner[o["startFace"]:o["startFace"] + o["nFaces"]])
     return MeshAddressing(offs, verts, pts0, owner, neighbour, n_cells,
-                          wingPoints, ovCells)
+                          wing_points, ov_cells)
 
 
 def hole_clearance(x0, margin, h):
     """Background holes x0 (the component's frame at phi = alpha = 0):
     how many lie outside the component, their smallest clearance to its
     boundary and the farthest from the plate (in h)."""
-    dPlan = planform_distance(x0[:, :2])
-    zClear = 0.5*geo.THICKNESS + margin - np.abs(x0[:, 2])
-    clear = np.minimum(margin - dPlan, zClear)
+    d_plan = planform_distance(x0[:, :2])
+    z_clear = 0.5*geo.THICKNESS + margin - np.abs(x0[:, 2])
+    clear = np.minimum(margin - d_plan, z_clear)
     outside = int(np.sum(clear < 0))
     clearance = float(clear.min())/h
-    dWall = np.hypot(dPlan, np.maximum(
+    d_wall = np.hypot(d_plan, np.maximum(
         np.abs(x0[:, 2]) - 0.5*geo.THICKNESS, 0.0))
-    return outside, clearance, float(dWall.max())/h
+    return outside, clearance, float(d_wall.max())/h
 
 
 def check_time(case, t, m, gen):
@@ -314,19 +314,19 @@ def check_time(case, t, m, gen):
         res[name] = {k: int(np.sum(types[sel] == v)) for k, v in
                      (("calculated", CALCULATED),
                       ("interpolated", INTERPOLATED), ("hole", HOLE))}
-    wingOrphans = int(np.sum((zone == 1) & (types == HOLE)))
-    ovNotInterp = int(np.sum(types[m.ovCells] != INTERPOLATED))
+    wing_orphans = int(np.sum((zone == 1) & (types == HOLE)))
+    ov_not_interp = int(np.sum(types[m.ov_cells] != INTERPOLATED))
 
     # background holes in the component's frame at phi = alpha = 0
-    R, T = rigid_fit(m.pts0[m.wingPoints], pts[m.wingPoints])
-    bgHoles = np.where((zone == 0) & (types == HOLE))[0]
+    R, T = rigid_fit(m.pts0[m.wing_points], pts[m.wing_points])
+    bg_holes = np.where((zone == 0) & (types == HOLE))[0]
     outside = 0
     clearance = dmax = float("nan")
-    if len(bgHoles):
-        x0 = ((cc[bgHoles] - T) @ R) @ Rgen   # R^T, then Rgen^T
+    if len(bg_holes):
+        x0 = ((cc[bg_holes] - T) @ R) @ Rgen   # R^T, then Rgen^T
         outside, clearance, dmax = hole_clearance(x0, margin, h)
-    res.update(wingOrphans=wingOrphans, backgroundOrphans=outside,
-               oversetAcceptorsNotInterpolated=ovNotInterp,
+    res.update(wingOrphans=wing_orphans, backgroundOrphans=outside,
+               oversetAcceptorsNotInterpolated=ov_not_interp,
                minHoleClearance_h=clearance, maxHoleDistance_h=dmax,
                h=h)
     return res

@@ -87,14 +87,14 @@ def build(level, component, pose=(0.0, 0.0), tilts=(0.0,)):
     return LevelMeshes(lev, comp, wbm, winfo, bbm, binfo)
 
 
-def write_wing_and_background(out, hdr, drone, m, extraActions=None):
+def write_wing_and_background(out, hdr, drone, m, extra_actions=None):
     """<out>/wing and <out>/background with the topoSetDict.refine<i> of
     the background (plus extraActions(i, region) in each)."""
     write_case(os.path.join(out, "wing"), m.wbm,
               hdr + "// %s: wing component (O-type, overset)\n\n" % drone)
     extra = {"topoSetDict.refine%d" % (j + 1):
              topo_set_refine(r, BACKGROUND["centre"],
-                           extraActions(j, r) if extraActions else ())
+                           extra_actions(j, r) if extra_actions else ())
              for j, r in enumerate(m.binfo["regions"])}
     write_case(os.path.join(out, "background"), m.bbm,
               hdr + "// %s: background cube\n\n" % drone, extra)

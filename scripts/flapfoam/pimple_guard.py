@@ -2,8 +2,9 @@
 #     This file is part of flapFoam, derived from OpenFOAM: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """
-The accuracy guard of the PIMPLE study (bench/pimple): a single-wing drone
-run against a reference run on the same mesh (the paper's settings: PISO,
+The accuracy guard of the PIMPLE study (bench/pimple): a drone run (the
+single-wing or the body-wing drone: its wing's loads, x = q_1, z = q_0)
+against a reference run on the same mesh (the paper's settings: PISO,
 4 correctors, max Co 1, p to 1e-7), over the first whole flapping cycle(s)
 both runs completed.
 

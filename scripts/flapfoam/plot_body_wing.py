@@ -51,7 +51,7 @@ class Run:
     d: dict
     t: object
     q: object
-    qDot: object
+    q_dot: object
     wang: dict
     f: float
     tf: object
@@ -92,9 +92,9 @@ def body_pitch(r, out):
 
 def coefficients(r, out):
     """(c), (d) coefficients at the times of the flow they come from."""
-    d, q, qDot, tf = r.d, r.q, r.qDot, r.tf
+    d, q, q_dot, tf = r.d, r.q, r.q_dot, r.tf
     tl = tf[:-1]
-    downstroke = qDot[:-1, 3] if q.shape[1] > 3 else np.zeros_like(tl)
+    downstroke = q_dot[:-1, 3] if q.shape[1] > 3 else np.zeros_like(tl)
     fig, ax = plt.subplots(figsize=(8, 4.5))
     shade_downstrokes(ax, tl, downstroke)
     for body in ("wing", "body"):

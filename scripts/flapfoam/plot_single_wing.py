@@ -110,7 +110,10 @@ def reference_values(coeffs):
     of the multibody coefficients (the module's docstring)."""
     joints = imposed_joints(coeffs)
     rho = float(coeffs.get("rhoInf", ["1.2"])[0])
-    flap = joints.get(2)
+    # the flapping joint: the motion named flapping (the body-wing drone's
+    # joint 3), else the single-wing drone's joint 2
+    flap = next((m for m in joints.values() if m.name == "flapping"),
+                joints.get(2))
     f = flap.frequency if flap else 20.0
     Aphi = flap.amplitude if flap else 75.0*math.pi/180.0
     Uref = 4.0*f*Aphi*geo.radius_of_gyration()
@@ -118,10 +121,10 @@ def reference_values(coeffs):
                      0.5*rho*geo.planform_area()*Uref**2)
 
 
-def read_run(case, dictPath):
+def read_run(case, dict_path):
     """The run's tables, prescribed joints and reference values; prints
     them."""
-    ref = reference_values(multibody_coeffs(dictPath))
+    ref = reference_values(multibody_coeffs(dict_path))
 
     base = os.path.join(case, "postProcessing", "eABAMeshMotion")
     tables = flight_data.tables(case)
@@ -133,8 +136,9 @@ def read_run(case, dictPath):
         if not start_folders(base):
             sys.exit("plotRun: no %s/<time>/joints.dat and no flightData.h5"
                      % base)
-        jcols, J = joined_table(base, "joints.dat", keepEarlierAtStart=False)
-        bcols, B = joined_table(base, "bodies.dat", keepEarlierAtStart=True)
+        jcols, J = joined_table(base, "joints.dat",
+                                keep_earlier_at_start=False)
+        bcols, B = joined_table(base, "bodies.dat", keep_earlier_at_start=True)
         source = "joints.dat: 12 digits"
     jc = {c: i for i, c in enumerate(jcols)}
     bc = {c: i for i, c in enumerate(bcols)}
@@ -176,14 +180,14 @@ def force_coefficients(r, out):
     f, qref, Uref = r.f, r.qref, r.Uref
     if not ("wing:Fx" in bc and len(B) > 1):
         return
-    tF, Cx, Cz = coefficients(B, bc, qref)
+    t_f, Cx, Cz = coefficients(B, bc, qref)
     # the phase of the stroke at the load times
-    qDot2 = np.interp(tF, t, J[:, jc["qDot_2"]]) if "qDot_2" in jc \
-        else np.zeros_like(tF)
+    q_dot2 = np.interp(t_f, t, J[:, jc["qDot_2"]]) if "qDot_2" in jc \
+        else np.zeros_like(t_f)
     fig, ax = plt.subplots(figsize=(8, 4.5))
-    shade_downstrokes(ax, f*tF, qDot2)
-    ax.plot(f*tF, Cx, label="C_xI")
-    ax.plot(f*tF, Cz, label="C_zI")
+    shade_downstrokes(ax, f*t_f, q_dot2)
+    ax.plot(f*t_f, Cx, label="C_xI")
+    ax.plot(f*t_f, Cz, label="C_zI")
     ax.axhline(0, color="k", lw=0.5)
     # The impulsive start (the flow at rest, the wing at full speed with
     # -midStroke) gives coefficients of order 1e3 for a few steps: the
@@ -210,13 +214,13 @@ def force_coefficients(r, out):
     ax.grid(True, alpha=0.3)
     ax.legend()
     save(fig, out, "forceCoefficients.png")
-    nCycles = int(math.floor((tF[-1] - t[0])*f + 1e-9))
-    if nCycles >= 1:
-        sel = tF <= t[0] + nCycles/f
-        w = np.gradient(tF[sel]) if sel.sum() > 1 else np.ones(1)
+    n_cycles = int(math.floor((t_f[-1] - t[0])*f + 1e-9))
+    if n_cycles >= 1:
+        sel = t_f <= t[0] + n_cycles/f
+        w = np.gradient(t_f[sel]) if sel.sum() > 1 else np.ones(1)
         print("plotRun: mean C_xI = %.6g, C_zI = %.6g over %d cycle(s)"
               % (np.sum(w*Cx[sel])/np.sum(w), np.sum(w*Cz[sel])/np.sum(w),
-                 nCycles))
+                 n_cycles))
     print("plotRun: last C_xI = %.6g, C_zI = %.6g" % (Cx[-1], Cz[-1]))
 
 

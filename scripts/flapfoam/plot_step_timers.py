@@ -123,14 +123,14 @@ def main(argv=None):
         formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("inputs", nargs="+", metavar="INPUT")
     parser.add_argument("-o", dest="output", default="stepTimers.png")
-    parser.add_argument("-n", "-nStartup", dest="nStartup", type=int,
+    parser.add_argument("-n", "-nStartup", dest="n_startup", type=int,
                         default=2)
     parser.add_argument("-l", dest="label", action="append")
     parser.add_argument("-fine", action="store_true")
     parser.add_argument("-title")
     args = parser.parse_args(argv)
 
-    if args.nStartup < 0:
+    if args.n_startup < 0:
         parser.error("-nStartup must be >= 0")
     labels = args.label or []
     if labels and len(labels) != len(args.inputs):
@@ -138,7 +138,7 @@ def main(argv=None):
     labels = labels or [os.path.normpath(p) for p in args.inputs]
 
     try:
-        chart(args.inputs, labels, args.nStartup,
+        chart(args.inputs, labels, args.n_startup,
               Chart(args.output, args.title, args.fine))
     except ValueError as e:
         sys.exit("plotStepTimers: %s" % e)

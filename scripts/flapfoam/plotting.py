@@ -51,9 +51,9 @@ def cycle_axes(ax, ylabel, title):
     ax.grid(True, alpha=0.3)
 
 
-def shade_downstrokes(ax, t, qDot):
+def shade_downstrokes(ax, t, q_dot):
     """Shade the intervals where phi decreases (qDot < 0)."""
-    down = qDot < 0
+    down = q_dot < 0
     if not down.any():
         return
     edges = np.flatnonzero(np.diff(down.astype(int))) + 1

@@ -85,7 +85,7 @@ class FlightRows:
     KEYS = ("orientation", "position", "velocity", "angularVelocity",
             "force")
 
-    def __init__(self, case, body, centreOfMass, skip):
+    def __init__(self, case, body, centre_of_mass, skip):
         path = find(case)
         if path is None:
             fail("no postProcessing/flightData/*/flightData.h5 in %s (a CFD"
@@ -97,10 +97,10 @@ class FlightRows:
             fail("%s: cannot read: %s" % (path, e))
         self.select(t, d, skip)
         E = d["orientation"][self.rows].reshape(-1, 3, 3)
-        arm = E @ centreOfMass
+        arm = E @ centre_of_mass
         self.E, self.omega = E, d["angularVelocity"][self.rows]
         self.origin = d["position"][self.rows] - arm
-        self.vOrigin = d["velocity"][self.rows] \
+        self.v_origin = d["velocity"][self.rows] \
             - np.cross(self.omega, arm)
         self.force = d["force"][self.rows]
         self.time = t[self.rows]
@@ -149,7 +149,7 @@ def basis_forces(wing, rows):
             setattr(unit, k, 1.0 if k == coefficient else 0.0)
         for i in range(len(rows.time)):
             basis[i, j], _ = unit.force(rows.E[i], rows.origin[i],
-                                        rows.vOrigin[i], rows.omega[i])
+                                        rows.v_origin[i], rows.omega[i])
     return basis
 
 
@@ -262,11 +262,11 @@ def report(wing, rows, axes):
     print("mean F_z %s: run %.6g N" % (over, mean_z(rows.force)))
     for label, x in (("fitted", fitted), ("Wang's defaults", wang)):
         model = np.einsum("j,ijk->ik", x, basis)
-        fitText = "; ".join("%s: R^2 %.6f, RMS residual %.3g of the range"
+        fit_text = "; ".join("%s: R^2 %.6f, RMS residual %.3g of the range"
                             % (axes[i], r2, rms) for i, (r2, rms)
                             in enumerate(quality(model, rows, components)))
         print("QS %s (CL %.4g CD0 %.4g CD1 %.4g): %s; mean F_z %.6g N ="
-              " %.4f of the run's" % (label, *x, fitText, mean_z(model),
+              " %.4f of the run's" % (label, *x, fit_text, mean_z(model),
                                        mean_z(model)/mean_z(rows.force)))
     text = entry_text(wing.name, entry, fitted)
     print("The entry to paste (aerodynamics of %s):\n%s" % (wing.path, text))

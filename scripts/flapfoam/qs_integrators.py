@@ -34,11 +34,11 @@ class Study:
     cycles: int
 
 
-def flight(study, solver, nIter, steps):
+def flight(study, solver, n_iter, steps):
     """(xEnd, zEnd, seconds, frequency) of one run."""
-    work = os.path.join(study.dir, "%s-%d-%d" % (solver, nIter, steps))
+    work = os.path.join(study.dir, "%s-%d-%d" % (solver, n_iter, steps))
     os.makedirs(work, exist_ok=True)
-    model = Model(study.dict, work, solver, nIter)
+    model = Model(study.dict, work, solver, n_iter)
     row = Sweep(model, work, study.cycles, steps).run("run", {})
     return row["xEnd"], row["zEnd"], row["seconds"], \
         model.defaults["frequency"]
@@ -55,7 +55,7 @@ def main():
     args = parser.parse_args()
     steps = [int(s) for s in args.steps.split()]
     study = Study(args.dict, args.dir, args.cycles)
-    xRef, zRef, _, _ = flight(study, "Newmark", 3, 4*max(steps))
+    x_ref, z_ref, _, _ = flight(study, "Newmark", 3, 4*max(steps))
     lines = [
         "| integrator | nIter | steps/cycle | x(T) [mm] | z(T) [mm] |"
         " x - Newmark 3 [mm] (%) | z - Newmark 3 [mm] (%) |"
@@ -64,27 +64,27 @@ def main():
     summary = []
     for n in steps:
         runs = {(s, i): flight(study, s, i, n) for s, i in INTEGRATORS}
-        xN, zN, _, _ = runs[("Newmark", 3)]
+        x_n, z_n, _, _ = runs[("Newmark", 3)]
         summary.append(
             "%d steps per cycle (deltaT %.3g s): the largest difference from"
             " Newmark nIter 3 is %.2g %% in x and %.2g %% in z (paper:"
             " within 1 %%)." % (n, 1/(n*runs[("Newmark", 3)][3]),
-                               max(100*abs(x - xN)/abs(xN)
+                               max(100*abs(x - x_n)/abs(x_n)
                                    for x, _, _, _ in runs.values()),
-                               max(100*abs(z - zN)/abs(zN)
+                               max(100*abs(z - z_n)/abs(z_n)
                                    for _, z, _, _ in runs.values())))
         for (s, i), (x, z, sec, _) in runs.items():
             lines.append(
                 "| %s | %d | %d | %.4f | %.4f | %+.2e (%.2g) | %+.2e (%.2g)"
                 " | %.2g | %.2g | %.2f |"
-                % (s, i, n, 1e3*x, 1e3*z, 1e3*(x - xN),
-                   100*abs(x - xN)/abs(xN), 1e3*(z - zN),
-                   100*abs(z - zN)/abs(zN), 100*abs(x - xRef)/abs(xRef),
-                   100*abs(z - zRef)/abs(zRef), sec))
+                % (s, i, n, 1e3*x, 1e3*z, 1e3*(x - x_n),
+                   100*abs(x - x_n)/abs(x_n), 1e3*(z - z_n),
+                   100*abs(z - z_n)/abs(z_n), 100*abs(x - x_ref)/abs(x_ref),
+                   100*abs(z - z_ref)/abs(z_ref), sec))
     lines += [""] + summary + [""]
     lines.append("Converged reference (Newmark nIter 3, %d steps per cycle):"
                  " x(T) = %.4f mm, z(T) = %.4f mm."
-                 % (4*max(steps), 1e3*xRef, 1e3*zRef))
+                 % (4*max(steps), 1e3*x_ref, 1e3*z_ref))
     with open(args.o, "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))

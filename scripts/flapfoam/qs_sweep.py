@@ -132,15 +132,15 @@ class Model:
     by placeholder words (foamDictionary -precision 17 -set), filled in per
     point; the solver and nIter set once."""
 
-    def __init__(self, path, workDir, solver=None, nIter=None,
-                 massBody=None):
+    def __init__(self, path, work_dir, solver=None, n_iter=None,
+                 mass_body=None):
         if not os.path.isfile(path):
             raise SweepError("-dict %s: no such file" % path)
         d = read_foam_dict(path)
         self.prefix = "eABAMeshMotionCoeffs/" \
             if "eABAMeshMotionCoeffs" in d else ""
         coeffs = d.get("eABAMeshMotionCoeffs", d)
-        self.entries = self._waveformEntries(path, coeffs)
+        self.entries = self._waveform_entries(path, coeffs)
         aero = [e for e in coeffs.get("aerodynamics", {}).values()
                 if isinstance(e, dict)]
         if not aero:
@@ -148,27 +148,27 @@ class Model:
                              " (allowed: a multibody dictionary with"
                              " aerodynamics { NAME { type quasiSteady; ...}})"
                              % path)
-        self.massBody = massBody or aero[0]["body"][0]
-        if self.massBody not in coeffs.get("bodies", {}):
+        self.mass_body = mass_body or aero[0]["body"][0]
+        if self.mass_body not in coeffs.get("bodies", {}):
             raise SweepError("-massBody %s: not allowed (a body of %s: %s)"
-                             % (self.massBody, path,
+                             % (self.mass_body, path,
                                 ", ".join(coeffs.get("bodies", {}))))
         self.g = abs(float(coeffs.get("g", ["(", "0", "0", "0", ")"])[3]))
         self.defaults = self._defaults(coeffs)
-        self.template = os.path.join(workDir, "dynamicMeshDict.template")
+        self.template = os.path.join(work_dir, "dynamicMeshDict.template")
         shutil.copy(path, self.template)
         for name in PARAMETERS:
             for entry in self._paths(name):
                 self._set(entry, "qsSweep_" + name)
         if solver:
             self._set("solver/type", solver)
-        if nIter:
-            self._set("nIter", str(nIter))
+        if n_iter:
+            self._set("nIter", str(n_iter))
         with open(self.template) as f:
             self.text = f.read()
 
     @staticmethod
-    def _waveformEntries(path, coeffs):
+    def _waveform_entries(path, coeffs):
         entries = {}
         for name, e in coeffs.get("imposedMotion", {}).items():
             if isinstance(e, dict) and e.get("type") == ["wang"]:
@@ -183,7 +183,7 @@ class Model:
     def _paths(self, name):
         waveform, key, _ = PARAMETERS[name]
         if name == "mass":
-            return ["bodies/%s/mass" % self.massBody]
+            return ["bodies/%s/mass" % self.mass_body]
         waveforms = [waveform] if waveform else ["flapping", "pitching"]
         return ["imposedMotion/%s/%s" % (self.entries[w], key)
                 for w in waveforms]
@@ -238,9 +238,9 @@ def point_results(data, names, heave, surge, g):
     col = {n: i for i, n in enumerate(names)}
     t = data[:, 0]
     T = t[-1] - t[0]
-    z, zDot, x = (data[:, col["%s_%d" % (kind, q)]] for kind, q in
+    z, z_dot, x = (data[:, col["%s_%d" % (kind, q)]] for kind, q in
                   (("q", heave), ("qDot", heave), ("q", surge)))
-    rate, acceleration, drift = ((c[-1] - c[0])/T for c in (z, zDot, x))
+    rate, acceleration, drift = ((c[-1] - c[0])/T for c in (z, z_dot, x))
     row = {"meanClimbRate": rate, "meanClimbAcceleration": acceleration,
            "forceOverWeight": 1 + acceleration/g if g else math.nan,
            "meanDrift": drift, "meanPower": 0.0}
@@ -259,17 +259,17 @@ class Sweep:
     aerodynamics), each in its own case folder under workDir (removed
     after a successful run unless keep)."""
 
-    def __init__(self, model, workDir, cycles, stepsPerCycle, keep=False):
+    def __init__(self, model, work_dir, cycles, steps_per_cycle, keep=False):
         self.model = model
-        self.workDir = workDir
+        self.work_dir = work_dir
         self.cycles = cycles
-        self.stepsPerCycle = stepsPerCycle
+        self.steps_per_cycle = steps_per_cycle
         self.keep = keep
 
     def run(self, name, values):
         """{results} of the point values ({name: value}); SweepError if
         rigidBodySimulate fails."""
-        case = os.path.join(self.workDir, name)
+        case = os.path.join(self.work_dir, name)
         shutil.rmtree(case, ignore_errors=True)
         os.makedirs(os.path.join(case, "constant"))
         os.makedirs(os.path.join(case, "system"))
@@ -278,7 +278,7 @@ class Sweep:
         f = values.get("frequency", self.model.defaults["frequency"])
         with open(os.path.join(case, "system", "controlDict"), "w") as out:
             out.write(CONTROLDICT % (self.cycles/f,
-                                     1.0/(f*self.stepsPerCycle)))
+                                     1.0/(f*self.steps_per_cycle)))
         start = time.time()
         with open(os.path.join(case, "log"), "w") as log:
             rc = subprocess.call(["rigidBodySimulate", "-case", case,
@@ -304,7 +304,7 @@ class Sweep:
             shutil.rmtree(case)
         return row
 
-    def run_all(self, points, nProcs):
+    def run_all(self, points, n_procs):
         """The rows (values and results) of a list of points, nProcs runs
         at a time."""
         def one(item):
@@ -313,7 +313,7 @@ class Sweep:
             row.update(self.run("p%05d" % i, values))
             return row
 
-        with ThreadPoolExecutor(max_workers=nProcs) as pool:
+        with ThreadPoolExecutor(max_workers=n_procs) as pool:
             return list(pool.map(one, enumerate(points)))
 
 
@@ -367,7 +367,7 @@ class Hover:
         row["note"] = ""
         return row
 
-    def table(self, rows, nProcs):
+    def table(self, rows, n_procs):
         """The hover rows of every combination of the other parameters."""
         others = [n for n in self.grid if n != self.param]
         combos = grid_points({n: self.grid[n] for n in others})
@@ -377,7 +377,7 @@ class Hover:
                            if all(r[k] == c[k] for k in others)),
                           key=lambda r: r[self.param])
 
-        with ThreadPoolExecutor(max_workers=nProcs) as pool:
+        with ThreadPoolExecutor(max_workers=n_procs) as pool:
             return list(pool.map(
                 lambda ic: self.find(ic[1], rows_of(ic[1]),
                                      "hover%03d" % ic[0]),
@@ -488,27 +488,30 @@ def arguments(argv):
     parser.add_argument("-grid", required=True)
     parser.add_argument("-dict", default=default)
     parser.add_argument("-cycles", type=int, default=5)
-    parser.add_argument("-stepsPerCycle", type=int, default=250)
+    parser.add_argument("-stepsPerCycle", dest="steps_per_cycle", type=int,
+                        default=250)
     parser.add_argument("-solver", choices=SOLVERS, default="Newmark")
-    parser.add_argument("-nIter", type=int)
+    parser.add_argument("-nIter", dest="n_iter", type=int)
     parser.add_argument("-np", type=int, default=2)
     parser.add_argument("-dir", default="/tmp/flapFoam-qsSweep")
     parser.add_argument("-o", default="qsSweep")
     parser.add_argument("-map")
     parser.add_argument("-hover", metavar="PARAM")
-    parser.add_argument("-hoverTol", type=float, default=1e-6,
+    parser.add_argument("-hoverTol", dest="hover_tol", type=float,
+                        default=1e-6,
                         help="tolerance on the hover value (default 1e-6)")
-    parser.add_argument("-massBody", help="the body of the parameter mass")
+    parser.add_argument("-massBody", dest="mass_body",
+                        help="the body of the parameter mass")
     parser.add_argument("-keep", action="store_true")
     args = parser.parse_args(argv)
-    for name, least in (("cycles", 1), ("stepsPerCycle", 4), ("np", 1),
-                        ("nIter", 1)):
-        v = getattr(args, name)
+    for option, v, least in (("cycles", args.cycles, 1),
+                             ("stepsPerCycle", args.steps_per_cycle, 4),
+                             ("np", args.np, 1), ("nIter", args.n_iter, 1)):
         if v is not None and v < least:
             parser.error("-%s %d: not allowed (an integer >= %d)"
-                         % (name, v, least))
-    if not args.hoverTol > 0:
-        parser.error("-hoverTol %g: not allowed (> 0)" % args.hoverTol)
+                         % (option, v, least))
+    if not args.hover_tol > 0:
+        parser.error("-hoverTol %g: not allowed (> 0)" % args.hover_tol)
     return args
 
 
@@ -518,11 +521,11 @@ def main(argv=None):
         grid = parse_grid(args.grid)
         pair = map_pair(grid, args.map)
         os.makedirs(args.dir, exist_ok=True)
-        model = Model(args.dict, args.dir, args.solver, args.nIter,
-                      args.massBody)
-        sweep = Sweep(model, args.dir, args.cycles, args.stepsPerCycle,
+        model = Model(args.dict, args.dir, args.solver, args.n_iter,
+                      args.mass_body)
+        sweep = Sweep(model, args.dir, args.cycles, args.steps_per_cycle,
                       args.keep)
-        hover = Hover(sweep, grid, args.hover, args.hoverTol) \
+        hover = Hover(sweep, grid, args.hover, args.hover_tol) \
             if args.hover else None
         start = time.time()
         rows = sweep.run_all(grid_points(grid), args.np)
@@ -530,7 +533,7 @@ def main(argv=None):
         write_table(args.o + ".csv", rows, list(grid) + list(RESULTS))
         print("qsSweep: %d points (%d cycles, %d steps per cycle, %d at a"
               " time) in %.1f s wall, %.3f s per run: %s.csv"
-              % (len(rows), args.cycles, args.stepsPerCycle, args.np, wall,
+              % (len(rows), args.cycles, args.steps_per_cycle, args.np, wall,
                  np.mean([r["seconds"] for r in rows]), args.o))
         plot(args.o + ".png", rows, grid, pair,
              "%s: %d points, %d cycles from rest" % (

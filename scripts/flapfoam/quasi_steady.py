@@ -61,26 +61,26 @@ class Wing:
         self.CD1 = float(entry.get("CD1", ["1.0"])[0])
         self.wind = vec(entry.get("wind", ["0", "0", "0"]))
 
-    def force(self, E, origin, vOrigin, omega):
+    def force(self, E, origin, v_origin, omega):
         """Force and moment (global origin) for the body's orientation E
         (body -> global), origin position and velocity, angular velocity."""
         s, c = E @ self.span, E @ self.chord
         n = np.cross(c, s)
         arm = self.points @ E.T
-        u = self.wind - (vOrigin + np.cross(omega, arm))
-        uPerp = u - np.outer(u @ s, s)
-        U = np.linalg.norm(uPerp, axis=1)
+        u = self.wind - (v_origin + np.cross(omega, arm))
+        u_perp = u - np.outer(u @ s, s)
+        U = np.linalg.norm(u_perp, axis=1)
         live = U >= 1e-12
-        eD = uPerp[live]/U[live, None]
-        alpha = np.arccos(np.minimum(1.0, np.abs(eD @ c)))
-        eL = np.cross(s, eD)
-        eL /= np.linalg.norm(eL, axis=1)[:, None]
-        eL *= np.where((eL @ n)*(uPerp[live] @ n) < 0, -1.0, 1.0)[:, None]
+        e_d = u_perp[live]/U[live, None]
+        alpha = np.arccos(np.minimum(1.0, np.abs(e_d @ c)))
+        e_l = np.cross(s, e_d)
+        e_l /= np.linalg.norm(e_l, axis=1)[:, None]
+        e_l *= np.where((e_l @ n)*(u_perp[live] @ n) < 0, -1.0, 1.0)[:, None]
         CL = self.CL*np.sin(2*alpha)
         CD = self.CD0 + self.CD1*(1 - np.cos(2*alpha))
-        dF = (0.5*self.rho*U[live]**2*self.area[live])[:, None] \
-            *(CL[:, None]*eL + CD[:, None]*eD)
-        return dF.sum(axis=0), np.cross(origin + arm[live], dF).sum(axis=0)
+        d_f = (0.5*self.rho*U[live]**2*self.area[live])[:, None] \
+            *(CL[:, None]*e_l + CD[:, None]*e_d)
+        return d_f.sum(axis=0), np.cross(origin + arm[live], d_f).sum(axis=0)
 
 
 def rotation(axis, angle):
@@ -106,23 +106,23 @@ class SingleWingDrone:
     def wing_motion(self, t):
         """The wing's orientation E (body -> global) and angular velocity
         at t (the prescribed flapping and pitching)."""
-        phi, phiDot, _ = self.phi(t)
-        alpha, alphaDot, _ = self.alpha(t)
+        phi, phi_dot, _ = self.phi(t)
+        alpha, alpha_dot, _ = self.alpha(t)
         Rz = rotation("z", float(phi))
         E = Rz @ rotation("y", float(alpha))
-        omega = np.array([0, 0, float(phiDot)]) \
-            + float(alphaDot)*(Rz @ np.array([0, 1, 0]))
+        omega = np.array([0, 0, float(phi_dot)]) \
+            + float(alpha_dot)*(Rz @ np.array([0, 1, 0]))
         return E, omega
 
     def rhs(self, t, y):
-        x, z, xDot, zDot = y
+        x, z, x_dot, z_dot = y
         E, omega = self.wing_motion(t)
         F, _ = self.wing.force(E, np.array([x, 0, z]),
-                               np.array([xDot, 0, zDot]), omega)
-        return [xDot, zDot, F[0]/self.mass, F[2]/self.mass - self.g]
+                               np.array([x_dot, 0, z_dot]), omega)
+        return [x_dot, z_dot, F[0]/self.mass, F[2]/self.mass - self.g]
 
-    def fly(self, endTime, dt):
-        t = np.arange(0, endTime + 0.5*dt, dt)
+    def fly(self, end_time, dt):
+        t = np.arange(0, end_time + 0.5*dt, dt)
         sol = solve_ivp(self.rhs, (0, t[-1]), [0, 0, 0, 0], t_eval=t,
                         method="DOP853", rtol=1e-10, atol=1e-13)
         return np.column_stack([sol.t, sol.y.T])
@@ -143,8 +143,8 @@ def main():
         parser.error("-cycles %g, -dt %g: both must be positive"
                      % (args.cycles, args.dt))
     drone = SingleWingDrone(multibody_coeffs(args.dict))
-    endTime = args.cycles/drone.phi.frequency
-    ref = drone.fly(endTime, args.dt)
+    end_time = args.cycles/drone.phi.frequency
+    ref = drone.fly(end_time, args.dt)
     np.savetxt(args.out, ref, header="t x z xDot zDot")
     if args.compare:
         err = errors(ref, np.loadtxt(args.compare))
@@ -158,9 +158,9 @@ def errors(ref, run):
     """{"z": e, "x": e}: the largest |run - reference| of a joints.dat's
     (rows of run) z and x, each relative to the reference's range."""
     out = {}
-    for name, col, refCol in (("z", 1, 2), ("x", 4, 1)):
-        value = np.interp(run[:, 0], ref[:, 0], ref[:, refCol])
-        scale = ref[:, refCol].max() - ref[:, refCol].min()
+    for name, col, ref_col in (("z", 1, 2), ("x", 4, 1)):
+        value = np.interp(run[:, 0], ref[:, 0], ref[:, ref_col])
+        scale = ref[:, ref_col].max() - ref[:, ref_col].min()
         out[name] = float(np.abs(run[:, col] - value).max()/scale)
     return out
 

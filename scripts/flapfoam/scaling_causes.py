@@ -37,8 +37,8 @@ def slowest_inputs(run, step):
     halo values (the iterations: the run's counted ones)."""
     d, r = run.decomposition, step["slowestRank"]
     return [float(d.cells[r]), run.iterations,
-            float(d.neighbours[r] + d.donorRanks[r]),
-            float(d.faces[r] + d.remoteDonors[r])]
+            float(d.neighbours[r] + d.donor_ranks[r]),
+            float(d.faces[r] + d.remote_donors[r])]
 
 
 def rank_pimple(costs, total, x):
@@ -48,9 +48,9 @@ def rank_pimple(costs, total, x):
     i1 = costs.serial_iterations()
     cells, iterations, interfaces, values = x
     return iterations/i1*(
-        costs.cCell*scaling_model.shared_bandwidth(cells, total, cal.pSat)
-        + i1*cal.cIter*interfaces
-        + costs.beta*costs.sBytes*8*values)
+        costs.c_cell*scaling_model.shared_bandwidth(cells, total, cal.p_sat)
+        + i1*cal.c_iter*interfaces
+        + costs.beta*costs.s_bytes*8*values)
 
 
 def attribute(a, b, costs):
@@ -122,8 +122,8 @@ def feature_rows(runs):
                        r.measured["pimpleOversetInterpolate"],
                        r.iterations, d.cells.max(),
                        d.cells.max()/d.cells.mean(), d.faces.max(),
-                       d.neighbours.max(), d.remoteDonors.max(),
-                       d.donorRanks.max(), 8*d.faces.max()))
+                       d.neighbours.max(), d.remote_donors.max(),
+                       d.donor_ranks.max(), 8*d.faces.max()))
     return out
 
 

@@ -85,11 +85,11 @@ class Calibration:
     [pressure iterations per doubling of the ranks, a share of the serial
     run's], vParallel [s], bStock [a share of the serial overset per extra
     rank], iterations (I1 where a level's serial iterations are unknown)."""
-    pSat: float
-    cIter: float
+    p_sat: float
+    c_iter: float
     growth: float
-    vParallel: float
-    bStock: float
+    v_parallel: float
+    b_stock: float
     iterations: float = 91.2
 
 
@@ -98,8 +98,8 @@ class Calibration:
 # (16-core Xeon, one socket: scaling-16core-*.tar.gz, one round, and
 # device-2026-11-26, the medians of three rounds); simple, metis and
 # oversetGraph are held out (bench/scaling/results-validate.md).
-CALIBRATION = Calibration(pSat=14.2, cIter=1.81e-05, growth=0.0598,
-                          vParallel=0.0245, bStock=0.0953)
+CALIBRATION = Calibration(p_sat=14.2, c_iter=1.81e-05, growth=0.0598,
+                          v_parallel=0.0245, b_stock=0.0953)
 CALIBRATION_RUNS = ("*-hierarchical-*", "*-scotch-*")
 
 
@@ -167,12 +167,12 @@ class Costs:
     def __init__(self, machine, pimple_traffic, traffic,
                  calibration=CALIBRATION):
         self.alpha, self.beta = machine
-        self.sMsg, self.sBytes, self.sReduce = pimple_traffic
+        self.s_msg, self.s_bytes, self.s_reduce = pimple_traffic
         self.traffic = traffic
         self.calibration = calibration
         self.stencil = OCTREE
         self.iterations = None
-        self.cCell = self.cFix = self.cWork = self.rbd = 0.0
+        self.c_cell = self.c_fix = self.c_work = self.rbd = 0.0
 
     def serial_iterations(self):
         """I1: the level's serial pressure iterations per step (the
@@ -185,14 +185,14 @@ class Costs:
         at least 0), cWork alone from one."""
         if len(runs) == 1:
             t, w, c = runs[0]
-            self.cFix, self.cWork = 0.0, (t - c)/w
+            self.c_fix, self.c_work = 0.0, (t - c)/w
             return
         a = least_squares([[1.0, w] for _t, w, _c in runs],
                           [t - c for t, _w, c in runs])
         if a[0] < 0:
             a = [0.0, least_squares([[w] for _t, w, _c in runs],
                                     [t - c for t, _w, c in runs])[0]]
-        self.cFix, self.cWork = a[0], max(a[1], 0.0)
+        self.c_fix, self.c_work = a[0], max(a[1], 0.0)
 
 
 class Decomposition:
@@ -208,13 +208,13 @@ class Decomposition:
         self.work = col["oversetWork"]
         self.pairs = col["remotePairs"]
         self.acceptors = col["acceptors"]
-        self.allPairs = col["pairs"]
+        self.all_pairs = col["pairs"]
         # donor cells on other ranks, each once, and the ranks they come
         # from (0 for a report without them)
-        self.sweepCounted = "remoteDonors" in col
+        self.sweep_counted = "remoteDonors" in col
         none = np.zeros(self.ranks)
-        self.remoteDonors = col.get("remoteDonors", none)
-        self.donorRanks = col.get("donorRanks", none)
+        self.remote_donors = col.get("remoteDonors", none)
+        self.donor_ranks = col.get("donorRanks", none)
         self.neighbours = np.asarray(neighbours, float)
         self.info = table["info"]
 
@@ -244,15 +244,15 @@ class Decomposition:
     def remote_pair_share(self):
         """Donor-acceptor pairs of the cycle with the donor on another
         rank, over all pairs."""
-        return self.pairs.sum()/self.allPairs.sum()
+        return self.pairs.sum()/self.all_pairs.sum()
 
     def sweep_values_max(self):
         """The values the busiest rank receives per linear-solver sweep:
         processor faces plus remote donor cells (v1912's remote-stencil
         interfaces); NaN for a report without remoteDonors."""
-        if not self.sweepCounted:
+        if not self.sweep_counted:
             return float("nan")
-        return float((self.faces + self.remoteDonors).max())
+        return float((self.faces + self.remote_donors).max())
 
     def all_remote_acceptor_share(self):
         """Acceptors with every donor on another rank (the stock log's
@@ -284,11 +284,11 @@ def pimple_ranks(costs, d, iterations=None):
     i1 = costs.serial_iterations()
     grow = iterations/i1 if iterations else \
         iteration_growth(d.ranks, cal.growth)
-    interfaces = d.neighbours + d.donorRanks
-    halo = grow*(i1*cal.cIter*interfaces
-                 + costs.beta*costs.sBytes*8*(d.faces + d.remoteDonors))
-    work = grow*costs.cCell*shared_bandwidth(d.cells, float(d.cells.sum()),
-                                             cal.pSat)
+    interfaces = d.neighbours + d.donor_ranks
+    halo = grow*(i1*cal.c_iter*interfaces
+                 + costs.beta*costs.s_bytes*8*(d.faces + d.remote_donors))
+    work = grow*costs.c_cell*shared_bandwidth(d.cells, float(d.cells.sum()),
+                                             cal.p_sat)
     return work + halo, halo
 
 
@@ -297,13 +297,13 @@ def overset_work(costs, d):
     rank's, with the shared bandwidth, plus the stencil's parallel
     part."""
     cal = costs.calibration
-    t = costs.cFix + costs.cWork*float(shared_bandwidth(
-        d.work_peak(), float(d.work.sum()), cal.pSat))
+    t = costs.c_fix + costs.c_work*float(shared_bandwidth(
+        d.work_peak(), float(d.work.sum()), cal.p_sat))
     if d.ranks > 1 and costs.stencil == STOCK:
-        t += cal.bStock*(d.ranks - 1)*(costs.cFix
-                                       + costs.cWork*float(d.work.sum()))
+        t += cal.b_stock*(d.ranks - 1)*(costs.c_fix
+                                       + costs.c_work*float(d.work.sum()))
     elif d.ranks > 1:
-        t += cal.vParallel
+        t += cal.v_parallel
     return t
 
 

@@ -130,8 +130,8 @@ def costs_table(data):
         f = c.traffic
         lines.append(
             "| %s | %s | %.2f | %.4f | %.2f | %.4f | %s | %s | %.0f %%, "
-            "%.0f %% |" % (level, SHORT[stencil], 1e6*c.cCell, c.cFix,
-                           1e6*c.cWork, c.rbd,
+            "%.0f %% |" % (level, SHORT[stencil], 1e6*c.c_cell, c.c_fix,
+                           1e6*c.c_work, c.rbd,
                            ", ".join("%.3g" % x for x in f.bytes),
                            ", ".join("%.3g" % x for x in f.messages),
                            100*f.error[0], 100*f.error[1]))

@@ -115,9 +115,9 @@ def pimple_traffic(traffic, structure):
     motion = traffic[("hierarchical", 2, stencil)]["perStep"][0]
     d = structure[("hierarchical", 2)]
     return ((flow["p2pCalls"] - motion["p2pCalls"])
-            / (d.neighbours[0] + d.donorRanks[0]),
+            / (d.neighbours[0] + d.donor_ranks[0]),
             (flow["p2pBytes"] - motion["p2pBytes"])
-            / (8*(d.faces[0] + d.remoteDonors[0])),
+            / (8*(d.faces[0] + d.remote_donors[0])),
             flow["collectiveCalls"] - motion["collectiveCalls"])
 
 
@@ -155,7 +155,7 @@ def serial_of(structure):
     from any of its reports' totals)."""
     d = next(iter(structure.values()))
     return scaling_model.serial_decomposition(
-        d.cells.sum(), d.work.sum(), d.allPairs.sum())
+        d.cells.sum(), d.work.sum(), d.all_pairs.sum())
 
 
 def serial_runs(data, stencil):
@@ -181,7 +181,7 @@ def fit_costs(data, stencil, level):
     serial = serial_runs(data, stencil)
     t, d = serial.get(level, serial.get(data["timeLevel"]))
     costs.fit_overset([(t["overset"], d.work[0], 0.0)])
-    costs.cCell, costs.rbd = t["pimple"]/d.cells[0], t["rbd"]
+    costs.c_cell, costs.rbd = t["pimple"]/d.cells[0], t["rbd"]
     return costs
 
 
@@ -193,7 +193,7 @@ def fixed_overset(data, stencil):
                                data["fits"][stencil])
     costs.fit_overset([(t["overset"], d.work[0], 0.0)
                        for t, d in serial_runs(data, stencil).values()])
-    return costs.cFix, costs.cWork
+    return costs.c_fix, costs.c_work
 
 
 def predictions(data):
@@ -219,16 +219,16 @@ class Bench:
     countSteps), the level timed (its first startup steps left out)."""
     dir: str
     levels: list
-    countLevel: str = "tiny"
-    countSteps: tuple = (1, 3)
-    timeLevel: str = "coarse"
+    count_level: str = "tiny"
+    count_steps: tuple = (1, 3)
+    time_level: str = "coarse"
     startup: int = 3
 
 
 def load(bench):
     """Everything the tables and charts need (bench: a Bench)."""
-    data = {"timeLevel": bench.timeLevel, "costs": {}}
-    levels = sorted(set(bench.levels) | {bench.countLevel, bench.timeLevel})
+    data = {"timeLevel": bench.time_level, "costs": {}}
+    levels = sorted(set(bench.levels) | {bench.count_level, bench.time_level})
     data["structure"] = {
         lv: read_structure(os.path.join(bench.dir, lv, "structure"),
                            os.path.join(bench.dir, lv, "base"))
@@ -236,22 +236,22 @@ def load(bench):
         if glob.glob(os.path.join(bench.dir, lv, "structure", "*.report"))}
     data["traffic"] = {
         lv: read_traffic(os.path.join(bench.dir, lv, "traffic"),
-                         *bench.countSteps)
+                         *bench.count_steps)
         for lv in data["structure"]
         if os.path.isdir(os.path.join(bench.dir, lv, "traffic"))}
     data["timed"] = {lv: read_timed(os.path.join(bench.dir, lv, "timed"),
                                     bench.startup) for lv in levels}
     data["machine"] = scaling_validate.read_ping_pong(
         os.path.join(bench.dir, "pingPong.log"))
-    data["pimpleTraffic"] = pimple_traffics(data, bench.countLevel)
+    data["pimpleTraffic"] = pimple_traffics(data, bench.count_level)
     data["stencils"] = [s for s in STENCILS if any(
-        k[2] == s for k in data["traffic"][bench.countLevel])]
+        k[2] == s for k in data["traffic"][bench.count_level])]
     data["fits"] = {s: traffic_fit(data, s) for s in data["stencils"]}
     data["fixedOverset"] = {s: fixed_overset(data, s)
                             for s in data["stencils"]}
     data["model"] = predictions(data)
     data["levels"] = [lv for lv in bench.levels if lv in data["structure"]]
-    data["countLevel"] = bench.countLevel
+    data["countLevel"] = bench.count_level
     return data
 
 
@@ -259,16 +259,17 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("-dir", required=True)
     parser.add_argument("-levels", default="fine")
-    parser.add_argument("-countLevel", default="tiny")
-    parser.add_argument("-countSteps", nargs=2, type=int, default=[1, 3])
-    parser.add_argument("-timeLevel", default="coarse")
+    parser.add_argument("-countLevel", dest="count_level", default="tiny")
+    parser.add_argument("-countSteps", dest="count_steps", nargs=2, type=int,
+                        default=[1, 3])
+    parser.add_argument("-timeLevel", dest="time_level", default="coarse")
     parser.add_argument("-startup", type=int, default=3)
     parser.add_argument("-o", default=os.path.join(
         os.path.dirname(os.path.abspath(__file__)), "..", "..", "bench",
         "scaling", "results"))
     args = parser.parse_args()
-    data = load(Bench(args.dir, args.levels.split(), args.countLevel,
-                      tuple(args.countSteps), args.timeLevel, args.startup))
+    data = load(Bench(args.dir, args.levels.split(), args.count_level,
+                      tuple(args.count_steps), args.time_level, args.startup))
     lines = scaling_report.tables(data)
     lines += ["", "Machine: %s, %d CPUs, load average %s; %s." % (
         platform.node(), os.cpu_count(),

@@ -325,11 +325,11 @@ def serial_costs(serial, cal):
     costs = scaling_model.Costs(serial.machine, (0.0, 0.0, 0.0), None, cal)
     n = float(serial.decomposition.cells.sum())
     costs.stencil = STENCILS[serial.stencil]
-    costs.cCell = serial.measured["pimple"]/n
-    costs.cWork = serial.measured["overset"]/n
+    costs.c_cell = serial.measured["pimple"]/n
+    costs.c_work = serial.measured["overset"]/n
     costs.rbd = serial.measured["rbd"]
     costs.iterations = serial.iterations
-    costs.sBytes = 2*serial.iterations  # two sweeps per BiCGStab iteration
+    costs.s_bytes = 2*serial.iterations  # two sweeps per BiCGStab iteration
     return costs
 
 
@@ -373,8 +373,8 @@ def _log_fit(residual, start, bounds):
 
 
 # where calibrate's least squares start
-START = scaling_model.Calibration(pSat=14.0, cIter=2e-5, growth=0.06,
-                                 vParallel=0.025, bStock=0.1)
+START = scaling_model.Calibration(p_sat=14.0, c_iter=2e-5, growth=0.06,
+                                 v_parallel=0.025, b_stock=0.1)
 
 
 def calibrate(runs, patterns=scaling_model.CALIBRATION_RUNS):
@@ -387,15 +387,15 @@ def calibrate(runs, patterns=scaling_model.CALIBRATION_RUNS):
     base = START
 
     def cal_of(x):
-        return dataclasses.replace(base, pSat=x[0], cIter=x[1],
-                                   vParallel=x[2], bStock=x[3])
+        return dataclasses.replace(base, p_sat=x[0], c_iter=x[1],
+                                   v_parallel=x[2], b_stock=x[3])
 
     def part(x, name, which):
         steps = model_steps(fit, cal_of(x), measured_iterations=True)
         return [math.log(steps[r.name][name]/r.measured[name])
                 for r in par if which(r)]
 
-    x = [base.pSat, base.cIter, base.vParallel, base.bStock]
+    x = [base.p_sat, base.c_iter, base.v_parallel, base.b_stock]
     x[:2] = _log_fit(lambda y: part(list(y) + x[2:], "pimple",
                                     lambda r: True),
                      x[:2], ([1.0, 0.0], [1e3, 1e-2]))
@@ -554,7 +554,8 @@ def arguments(argv=None):
     parser.add_argument("-rounds", nargs="+", metavar="FILE", default=[])
     parser.add_argument("-levels", default="coarse medium")
     parser.add_argument("-calibrate", nargs="+", metavar="PATTERN")
-    parser.add_argument("-measuredIterations", action="store_true")
+    parser.add_argument("-measuredIterations", dest="measured_iterations",
+                        action="store_true")
     parser.add_argument("-o", metavar="FILE")
     parser.add_argument("-causes", metavar="FILE")
     args = parser.parse_args(argv)
@@ -575,7 +576,7 @@ def main(argv=None):
             patterns = tuple(args.calibrate)
         cal = rounded(calibrate(runs, patterns))
     print("calibration: %s\ncalibrated on: %s" % (cal, " ".join(patterns)))
-    rows = compare(runs, cal, patterns, args.measuredIterations)
+    rows = compare(runs, cal, patterns, args.measured_iterations)
     print("\n".join(table(rows)))
     if args.o:
         with open(args.o, "w") as f:

@@ -52,7 +52,7 @@ def start_folders(base):
     return sorted(f for f in found if f[0] is not None)
 
 
-def joined_table(base, fileName, keepEarlierAtStart):
+def joined_table(base, file_name, keep_earlier_at_start):
     """The rows of base/<t>/fileName of all start folders t joined: a later
     folder replaces the rows from its start time on; its first row (the
     start time) is dropped when keepEarlierAtStart and an earlier row
@@ -60,7 +60,7 @@ def joined_table(base, fileName, keepEarlierAtStart):
     columns = None
     data = None
     for t0, folder in start_folders(base):
-        path = os.path.join(folder, fileName)
+        path = os.path.join(folder, file_name)
         if not os.path.isfile(path):
             continue
         cols, rows = read_table(path)
@@ -71,7 +71,7 @@ def joined_table(base, fileName, keepEarlierAtStart):
             sys.exit("plotRun: %s: columns differ from the first folder"
                      % path)
         eps = 1e-9*max(abs(t0), 1e-300) + 1e-15
-        if keepEarlierAtStart and np.any(np.abs(data[:, 0] - t0) <= eps):
+        if keep_earlier_at_start and np.any(np.abs(data[:, 0] - t0) <= eps):
             data = np.vstack([data[data[:, 0] <= t0 + eps],
                               rows[rows[:, 0] > t0 + eps]])
         else:

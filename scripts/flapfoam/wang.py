@@ -35,17 +35,17 @@ def wang_motion(entry):
             u, du, ddu = K*c, -K*w*s, -w*w*K*c
             one = 1.0 - u*u
             q = offset + S*np.arcsin(u)
-            qDot = S*du/np.sqrt(one)
-            qDdot = S/np.sqrt(one)*(ddu + u*du*du/one)
+            q_dot = S*du/np.sqrt(one)
+            q_ddot = S/np.sqrt(one)*(ddu + u*du*du/one)
         else:
             S = A/math.tanh(K)
             v, dv, ddv = K*s, K*w*c, -w*w*K*s
             th = np.tanh(v)
             sech2 = 1.0/np.cosh(v)**2
             q = offset + S*th
-            qDot = S*dv*sech2
-            qDdot = S*sech2*(ddv - 2.0*th*dv*dv)
-        return q, qDot, qDdot
+            q_dot = S*dv*sech2
+            q_ddot = S*sech2*(ddv - 2.0*th*dv*dv)
+        return q, q_dot, q_ddot
 
     evaluate.amplitude = A
     evaluate.frequency = f

@@ -108,10 +108,10 @@ def radius_of_gyration_quadrature(n=200001):
     return math.sqrt(integral/planform_area())
 
 
-def pose_matrix(phiDeg, alphaDeg):
+def pose_matrix(phi_deg, alpha_deg):
     """The wing's rotation at flapping angle phi (about z) and pitching
     angle alpha (about the pitch axis y), in degrees."""
-    phi, alpha = np.radians(phiDeg), np.radians(alphaDeg)
+    phi, alpha = np.radians(phi_deg), np.radians(alpha_deg)
     Rz = np.array([[np.cos(phi), -np.sin(phi), 0],
                    [np.sin(phi), np.cos(phi), 0], [0, 0, 1]])
     Ry = np.array([[np.cos(alpha), 0, np.sin(alpha)], [0, 1, 0],

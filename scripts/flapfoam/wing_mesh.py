@@ -215,34 +215,34 @@ OUTER_SIDE = {"ringL": "x1", "ringTp": "x1", "ringT": "x1",
               "rootL": "y0", "rootC": "y0", "rootT": "y0"}
 
 
-def planform_sizes(lev, comp, P, C, hOut):
+def planform_sizes(lev, comp, P, C, h_out):
     """Cell sizes of the planform edges (a, b) -> sizes a -> b, and the
     radial distribution and the top span size dTop."""
     d = comp["margin"]
     q = lev["q"]
-    nS, nL, nC = lev["nS"], lev["nL"], lev["nC"]
-    dsE = lev["dsE"]
+    n_s, n_l, n_c = lev["nS"], lev["nL"], lev["nC"]
+    ds_e = lev["dsE"]
     Lp = lambda a, b: planform_length(P, C, a, b)  # noqa: E731
 
     S = {}
     # radial: from the plate edge out to the overset boundary
-    nR = n_cells_growth(d, dsE, hOut, q)
-    rad = sizes_geometric(d, nR, dsE, q=q)
+    n_r = n_cells_growth(d, ds_e, h_out, q)
+    rad = sizes_geometric(d, n_r, ds_e, q=q)
     for p in ("E0", "Q0", "Q1", "E5", "P1", "P2"):
         S[(p, "O" + p)] = rad
     # across the edge strips (fine at the plate edge)
     for a_, b_ in (("E0", "Q0"), ("P2", "Q3"), ("E5", "Q1"), ("P1", "Q2")):
-        S[(a_, b_)] = sizes_geometric(Lp(a_, b_), nL, dsE, q=q)
+        S[(a_, b_)] = sizes_geometric(Lp(a_, b_), n_l, ds_e, q=q)
     # core (chordwise) and tip block along the tip: uniform
     for a_, b_ in (("Q0", "Q1"), ("Q3", "Q2"), ("P2", "P1")):
-        S[(a_, b_)] = np.full(nC, Lp(a_, b_)/nC)
+        S[(a_, b_)] = np.full(n_c, Lp(a_, b_)/n_c)
     # spanwise: fine at the root, down at the top towards the size of the
     # tip block's cells next to the core (spanFirst*dsE at least: the root
     # and tip cells need not be as fine as the wall-normal spacing)
-    dTop = min(S[("P1", "Q2")][-1], S[("P2", "Q3")][-1])
-    d0 = comp["spanFirst"]*dsE
+    d_top = min(S[("P1", "Q2")][-1], S[("P2", "Q3")][-1])
+    d0 = comp["spanFirst"]*ds_e
     for a_, b_ in (("E0", "P2"), ("Q0", "Q3"), ("Q1", "Q2"), ("E5", "P1")):
-        S[(a_, b_)] = sizes_geometric(Lp(a_, b_), nS, d0, max(dTop, d0), q=q)
+        S[(a_, b_)] = sizes_geometric(Lp(a_, b_), n_s, d0, max(d_top, d0), q=q)
     # outer edges: same fractions as the inner edge they face
     for (a_, b_), (ia, ib) in {
             ("OE0", "OP2"): ("E0", "P2"), ("OP2", "OP1"): ("P2", "P1"),
@@ -250,7 +250,7 @@ def planform_sizes(lev, comp, P, C, hOut):
             ("OQ0", "OQ1"): ("Q0", "Q1"), ("OQ1", "OE5"): ("Q1", "E5")}.items():
         inner = S[(ia, ib)] if (ia, ib) in S else S[(ib, ia)][::-1]
         S[(a_, b_)] = inner/inner.sum()*Lp(a_, b_)
-    return S, rad, dTop
+    return S, rad, d_top
 
 
 def check_counter_clockwise(P):
@@ -293,21 +293,21 @@ def wing_component(lev, comp, pose=(0.0, 0.0)):
     t = geo.THICKNESS
     d = comp["margin"]
     q = lev["q"]
-    nT = lev["nT"]
-    dsZ = t/nT
-    dsE = lev["dsE"]
-    hOut = background_cell_size(lev, BACKGROUND)
+    n_t = lev["nT"]
+    ds_z = t/n_t
+    ds_e = lev["dsE"]
+    h_out = background_cell_size(lev, BACKGROUND)
 
     P, C = wing_planform(comp)
-    S, rad, dTop = planform_sizes(lev, comp, P, C, hOut)
-    nR = len(rad)
+    S, rad, d_top = planform_sizes(lev, comp, P, C, h_out)
+    n_r = len(rad)
 
     # ---- z levels and distributions ----
-    nZ = n_cells_growth(d, dsZ, hOut, q)
+    n_z = n_cells_growth(d, ds_z, h_out, q)
     zs = [-(0.5*t + d), -0.5*t, 0.5*t, 0.5*t + d]
-    zSizes = [sizes_geometric(d, nZ, dsZ, q=q)[::-1],
-              np.full(nT, t/nT),
-              sizes_geometric(d, nZ, dsZ, q=q)]
+    z_sizes = [sizes_geometric(d, n_z, ds_z, q=q)[::-1],
+              np.full(n_t, t/n_t),
+              sizes_geometric(d, n_z, ds_z, q=q)]
 
     # ---- pose (optional initial flapping/pitching for tests) ----
     phi, alpha = pose
@@ -337,14 +337,14 @@ def wing_component(lev, comp, pose=(0.0, 0.0)):
                       [X(p, z) for p in inner])
     for iz in range(3):
         for nme in names:
-            bm.set_sizes(V[(nme, iz)], V[(nme, iz + 1)], zSizes[iz])
+            bm.set_sizes(V[(nme, iz)], V[(nme, iz + 1)], z_sizes[iz])
 
     check_counter_clockwise(P)
     add_blocks(bm, V)
 
-    info = dict(nR=nR, nZ=nZ, dsZ=dsZ, dsE=dsE, hOut=hOut,
-                radialLast=float(rad[-1]), zLast=float(zSizes[2][-1]),
-                spanMax=float(max(S[("E0", "P2")])), dTop=float(dTop),
+    info = dict(nR=n_r, nZ=n_z, dsZ=ds_z, dsE=ds_e, hOut=h_out,
+                radialLast=float(rad[-1]), zLast=float(z_sizes[2][-1]),
+                spanMax=float(max(S[("E0", "P2")])), dTop=float(d_top),
                 points={k: [float(v[0]), float(v[1])] for k, v in P.items()},
                 blocks=len(bm.blocks), cellsPlanned=bm.n_cells())
     return bm, info
@@ -363,18 +363,18 @@ def check_block_sides(bm):
             if count.get(frozenset(f), 0) != 1:
                 raise RuntimeError("patch %s face %s is not a boundary face"
                                    % (name, f))
-    nBoundary = sum(1 for v in count.values() if v == 1)
-    nPatch = sum(len(f) for _, f in bm.patches.values())
-    if nBoundary != nPatch:
+    n_boundary = sum(1 for v in count.values() if v == 1)
+    n_patch = sum(len(f) for _, f in bm.patches.values())
+    if n_boundary != n_patch:
         raise RuntimeError("%d block boundary faces, %d in patches"
-                           % (nBoundary, nPatch))
+                           % (n_boundary, n_patch))
 
 
 # --------------------------------------------------------------------------
 # Envelope of the motion
 # --------------------------------------------------------------------------
 
-def component_outline(comp, nPer=200):
+def component_outline(comp, n_per=200):
     """Points on the overset boundary of the wing component at phi = alpha
     = 0 (planform outer contour at z = +-(t/2 + margin)): the extreme points
     of the component under any rotation."""
@@ -382,7 +382,7 @@ def component_outline(comp, nPer=200):
     pts = []
     for k in (("OE0", "OP2"), ("OP2", "OP1"), ("OE5", "OP1"),
               ("OE0", "OQ0"), ("OQ1", "OE5")):
-        pts.append(resample(C[k], nPer))
+        pts.append(resample(C[k], n_per))
     pts.append(line(P["OQ0"], P["OQ1"], 10))
     xy = np.concatenate(pts)
     H = 0.5*geo.THICKNESS + comp["margin"]
@@ -410,10 +410,10 @@ def swept_envelope(comp, bg, tilts=(0.0,)):
                 pts.append(base @ (rot_y(tilt) @ Rz @ rot_y(alpha)).T)
     pts = np.concatenate(pts)
     r = np.hypot(pts[:, 0], pts[:, 1])
-    rMax = float(r.max())
-    zMax = float(np.abs(pts[:, 2]).max())
-    yA = float(pts[r > 0.5*rMax, 1].min())
-    rB = float(r[pts[:, 1] < yA].max()) if np.any(pts[:, 1] < yA) else 0.0
-    return dict(rMax=rMax, zMax=zMax, yA=yA, rB=rB)
+    r_max = float(r.max())
+    z_max = float(np.abs(pts[:, 2]).max())
+    y_a = float(pts[r > 0.5*r_max, 1].min())
+    r_b = float(r[pts[:, 1] < y_a].max()) if np.any(pts[:, 1] < y_a) else 0.0
+    return dict(rMax=r_max, zMax=z_max, yA=y_a, rB=r_b)
 
 

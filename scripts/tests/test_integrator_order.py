@@ -53,20 +53,20 @@ def test_table_has_a_row_per_combination():
 
 
 def test_pendulum_chains_read_from_the_dictionaries():
-    chain, q0, qDot0 = io.chain_of(io.SYSTEMS["doublePendulum"])
+    chain, q0, q_dot0 = io.chain_of(io.SYSTEMS["doublePendulum"])
     assert list(chain.lengths) == [0.1, 0.2]
     assert list(chain.masses) == [0.5, 0.5]
     assert chain.free == [1] and chain.fixed == [0]
     assert chain.prescribed[0](0.0)[0] == pytest.approx(0.0, abs=1e-15)
-    assert list(q0) == [0, 0] and list(qDot0) == [0, 0]
+    assert list(q0) == [0, 0] and list(q_dot0) == [0, 0]
 
-    chain, q0, qDot0 = io.chain_of(io.SYSTEMS["threeLink"])
+    chain, q0, q_dot0 = io.chain_of(io.SYSTEMS["threeLink"])
     assert list(chain.lengths) == [0.1, 0.15, 0.1]
     assert chain.free == [0, 2]
     assert list(q0) == [0.3, 0.1, -0.4]
     # the state file's middle entries are its motion's at t = 0
     assert chain.prescribed[1](0.0)[:2] == pytest.approx(
-        (q0[1], qDot0[1]), abs=1e-12)
+        (q0[1], q_dot0[1]), abs=1e-12)
 
 
 def test_reference_rows_at_the_write_times():

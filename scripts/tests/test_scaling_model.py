@@ -108,11 +108,11 @@ def test_shared_bandwidth():
 @pytest.fixture
 def costs():
     """G(2) = 1.5 with growth 0.5; I1 = 100 iterations; pSat 2."""
-    cal = scaling_model.Calibration(pSat=2.0, cIter=1e-5, growth=0.5,
-                                    vParallel=2e-3, bStock=0.1,
+    cal = scaling_model.Calibration(p_sat=2.0, c_iter=1e-5, growth=0.5,
+                                    v_parallel=2e-3, b_stock=0.1,
                                     iterations=100.0)
     c = scaling_model.Costs((1e-6, 1e-9), (10, 2, 4), traffic_fit(), cal)
-    c.cCell, c.cWork, c.rbd = 1e-6, 1e-5, 0.01
+    c.c_cell, c.c_work, c.rbd = 1e-6, 1e-5, 0.01
     return c
 
 
@@ -196,7 +196,7 @@ def test_step_of_an_overset_rank_report(costs):
     step = scaling_model.predict(costs, d, iterations=110)
     # rank 0: 1.1 (1e-6 B(600, 1100) + 100 1e-5 2 + 1e-9 2 8 45); overset:
     # 1e-5 B(600, 1100) + vParallel (no stencil traffic)
-    assert list(d.neighbours) == [1, 1] and list(d.remoteDonors) == [5, 9]
+    assert list(d.neighbours) == [1, 1] and list(d.remote_donors) == [5, 9]
     assert abs(step["pimple"] - 1.1*(1e-6*bw(600, 1100) + 2e-3 + 720e-9)) \
         < 1e-15
     assert abs(step["overset"] - (1e-5*bw(600, 1100) + 2e-3)) < 1e-15
@@ -286,5 +286,5 @@ def test_calibrate_reproduces_the_committed_constants(runs):
     cal = sv.calibrate(runs)
     ref = scaling_model.CALIBRATION
     diff = {f: abs(getattr(cal, f)/getattr(ref, f) - 1)
-            for f in ("pSat", "cIter", "growth", "vParallel", "bStock")}
+            for f in ("p_sat", "c_iter", "growth", "v_parallel", "b_stock")}
     assert max(diff.values()) < 0.03, str(cal)

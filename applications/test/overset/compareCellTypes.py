@@ -68,7 +68,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("-dir", required=True)
     ap.add_argument("-reference", required=True)
-    ap.add_argument("-minMatch", type=float, default=1.0)
+    ap.add_argument("-minMatch", dest="min_match", type=float, default=1.0)
     ap.add_argument("-skip", type=int, default=2,
                     help="first steps left out of the timer medians")
     ap.add_argument("names", nargs="+")
@@ -76,8 +76,8 @@ def main():
 
     ok = True
     ref = os.path.join(a.dir, a.reference)
-    refTimes = times(ref)
-    if not refTimes:
+    ref_times = times(ref)
+    if not ref_times:
         print("FAIL no cellTypes in %s" % ref)
         return 1
 
@@ -86,7 +86,7 @@ def main():
             continue
         case = os.path.join(a.dir, name)
         worst = 1.0
-        for t, tn in refTimes:
+        for t, tn in ref_times:
             f = os.path.join(case, tn, "cellTypes")
             if not os.path.isfile(f):
                 print("FAIL %s: no cellTypes at %s" % (name, tn))
@@ -104,11 +104,12 @@ def main():
                   % (name, tn, match, int(diff.sum()),
                      " ".join("%d->%d:%d" % (k[0], k[1], v)
                               for k, v in sorted(pairs.items()))))
-        status = "PASS" if worst >= a.minMatch else "FAIL"
-        ok = ok and worst >= a.minMatch
+        status = "PASS" if worst >= a.min_match else "FAIL"
+        ok = ok and worst >= a.min_match
         print("%s %s: cellTypes match vs %s >= %.6f over %d times "
               "(required %.4f)"
-              % (status, name, a.reference, worst, len(refTimes), a.minMatch))
+              % (status, name, a.reference, worst, len(ref_times),
+                 a.min_match))
 
     print("\nstepTimers medians [s] (first %d steps skipped):" % a.skip)
     print("  (stencil = oversetStencil + its laps, inside the stencil's update;"

@@ -35,20 +35,20 @@ def bodies(case, name="eABAMeshMotion"):
     base = os.path.join(case, "postProcessing", name)
     if not start_folders(base):
         sys.exit("compareMotion: no %s/<time>/bodies.dat" % base)
-    return joined_table(base, "bodies.dat", keepEarlierAtStart=False)
+    return joined_table(base, "bodies.dat", keep_earlier_at_start=False)
 
 
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("ref")
     ap.add_argument("case")
-    ap.add_argument("-forceTol", type=float, default=0.0)
-    ap.add_argument("-qTol", type=float, default=0.0)
+    ap.add_argument("-forceTol", dest="force_tol", type=float, default=0.0)
+    ap.add_argument("-qTol", dest="q_tol", type=float, default=0.0)
     ap.add_argument("-columns", default="q_0,qDot_0,q_1,qDot_1")
     ap.add_argument("-bodies", default="wing")
     a = ap.parse_args()
     name = os.path.basename(os.path.normpath(a.case))
-    refName = os.path.basename(os.path.normpath(a.ref))
+    ref_name = os.path.basename(os.path.normpath(a.ref))
     status = 0
 
     # Forces
@@ -69,10 +69,10 @@ def main():
         scale = float(np.linalg.norm(FA, axis=1).max()) + 1e-300
         rel = np.abs(FA[ia] - FB[ib]).max(axis=0)/scale
         status |= check_run.report(
-            float(rel.max()) <= a.forceTol, check,
+            float(rel.max()) <= a.force_tol, check,
             "vs %s, %d rows: max |dF|/max|F| %.2e (tol %g): %s "
             "(max|F| %.4g N)"
-            % (refName, len(ia), rel.max(), a.forceTol,
+            % (ref_name, len(ia), rel.max(), a.force_tol,
                ", ".join("F%s %.1e" % (c, r) for c, r in zip("xyz", rel)),
                scale))
 
@@ -92,11 +92,11 @@ def main():
             floor = 1e-3*np.abs(A[:, i]).max() + 1e-300
             worst[col] = float(
                 check_run.rel_diff(A[ia, i], B[ib, k], floor).max())
-        maxRel = max(worst.values())
+        max_rel = max(worst.values())
         status |= check_run.report(
-            maxRel <= a.qTol, "%s trajectory" % name,
+            max_rel <= a.q_tol, "%s trajectory" % name,
             "vs %s, %d rows: max relative difference %.2e (tol %g): %s"
-            % (refName, len(ia), maxRel, a.qTol,
+            % (ref_name, len(ia), max_rel, a.q_tol,
                ", ".join("%s %.1e" % kv for kv in worst.items())))
     return 1 if status else 0
 

@@ -33,13 +33,13 @@ def wing_rows(drone, states, centre):
     zDot)."""
     d = {k: [] for k in ("orientation", "position", "velocity",
                          "angularVelocity", "force")}
-    for t, x, z, xDot, zDot in states:
+    for t, x, z, x_dot, z_dot in states:
         E, omega = drone.wing_motion(t)
-        origin, vOrigin = np.array([x, 0, z]), np.array([xDot, 0, zDot])
-        F, _ = drone.wing.force(E, origin, vOrigin, omega)
+        origin, v_origin = np.array([x, 0, z]), np.array([x_dot, 0, z_dot])
+        F, _ = drone.wing.force(E, origin, v_origin, omega)
         d["orientation"].append(E.reshape(9))
         d["position"].append(origin + E @ centre)
-        d["velocity"].append(vOrigin + np.cross(omega, E @ centre))
+        d["velocity"].append(v_origin + np.cross(omega, E @ centre))
         d["angularVelocity"].append(omega)
         d["force"].append(F)
     d = {k: np.array(v) for k, v in d.items()}
@@ -54,8 +54,9 @@ def main():
         parser.add_argument("-" + k, type=float, required=True)
     parser.add_argument("-cycles", type=float, default=1)
     parser.add_argument("-dt", type=float, default=1e-4)
-    parser.add_argument("-thinAfter", type=float, default=float("inf"))
-    parser.add_argument("-noForce", action="store_true")
+    parser.add_argument("-thinAfter", dest="thin_after", type=float,
+                        default=float("inf"))
+    parser.add_argument("-noForce", dest="no_force", action="store_true")
     args = parser.parse_args()
     coeffs = multibody_coeffs(os.path.join(args.case, "constant",
                                           "dynamicMeshDict"))
@@ -63,7 +64,7 @@ def main():
     drone.wing.CL, drone.wing.CD0, drone.wing.CD1 = args.CL, args.CD0, \
         args.CD1
     states = drone.fly(args.cycles/drone.phi.frequency, args.dt)
-    late = states[:, 0] > args.thinAfter
+    late = states[:, 0] > args.thin_after
     states = states[~late | (np.cumsum(late) % 2 == 0)]
     centre = vec(coeffs["bodies"]["wing"]["centreOfMass"])
     d = wing_rows(drone, states, centre)
@@ -72,7 +73,7 @@ def main():
     with h5py.File(os.path.join(folder, "flightData.h5"), "w") as f:
         f["time"] = states[:, 0]
         for k, v in d.items():
-            if not (args.noForce and k == "force"):
+            if not (args.no_force and k == "force"):
                 f["bodies/wing/" + k] = v
 
 

@@ -53,7 +53,7 @@ THETA_MAX = math.radians(20)
 COMPONENT = dict(wing_mesh.COMPONENT, rootMargin=7e-3)
 
 
-class textDict:
+class text_dict:
     """A dictionary given as text, written like a BlockMesh"""
 
     def __init__(self, text):
@@ -93,7 +93,7 @@ def main(argv=None):
         args.output, hdr, "Body-wing drone", m,
         lambda j, r: refine_actions(r, m.binfo["margins"][j]))
     write_case(os.path.join(args.output, "body"),
-              textDict(stext.split("\n", 1)[1]),
+              text_dict(stext.split("\n", 1)[1]),
               FOAM_HEADER % ("dictionary", "blockMeshDict") + hdr)
 
     summary = dict(components=[dict(name="wing"),

@@ -105,7 +105,7 @@ def main():
     ap.add_argument("-dir", default=os.path.join(CASE, "runs",
                                                  "quasiSteadyPaper"))
     ap.add_argument("-o", dest="output", default=None)
-    ap.add_argument("-noRun", action="store_true")
+    ap.add_argument("-noRun", dest="no_run", action="store_true")
     a = ap.parse_args()
     if a.cycles < 1:
         ap.error("-cycles %d: not allowed (an integer >= 1)" % a.cycles)
@@ -114,7 +114,7 @@ def main():
     os.makedirs(base, exist_ok=True)
     os.makedirs(out, exist_ok=True)
 
-    walls = {} if a.noRun else run_all(base, a.cycles)
+    walls = {} if a.no_run else run_all(base, a.cycles)
     data = {}
     for name, _, _, _, _ in RUNS:
         folder = os.path.join(base, name)

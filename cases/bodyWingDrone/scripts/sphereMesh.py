@@ -72,12 +72,12 @@ def block_mesh_dict(level):
     from the origin), graded along the rays, and the level's parameters;
     mapPoints() then puts it onto the spheres."""
     lev = LEVELS[level]
-    n, nR, dsW = lev["n"], lev["nR"], lev["dsW"]
+    n, n_r, ds_w = lev["n"], lev["nR"], lev["dsW"]
     R2 = R1 + MARGIN
     # radial grading from the wall: the block's third direction runs from
     # the outer to the inner cube, so its ratio last/first is the inverse
     # of the growth outwards
-    ratio = 1.0/expansion(MARGIN, nR, dsW)
+    ratio = 1.0/expansion(MARGIN, n_r, ds_w)
 
     def corners(r):
         return [(sx*r, sy*r, sz*r) for (sx, sy, sz) in
@@ -90,35 +90,35 @@ def block_mesh_dict(level):
     blocks = [(9, 8, 12, 13, 1, 0, 4, 5), (10, 9, 13, 14, 2, 1, 5, 6),
               (11, 10, 14, 15, 3, 2, 6, 7), (8, 11, 15, 12, 0, 3, 7, 4),
               (8, 9, 10, 11, 0, 1, 2, 3), (13, 12, 15, 14, 5, 4, 7, 6)]
-    innerFaces = [(0, 4, 7, 3), (2, 6, 5, 1), (1, 5, 4, 0), (3, 7, 6, 2),
+    inner_faces = [(0, 4, 7, 3), (2, 6, 5, 1), (1, 5, 4, 0), (3, 7, 6, 2),
                   (0, 3, 2, 1), (4, 5, 6, 7)]
-    outerFaces = [tuple(v + 8 for v in f) for f in innerFaces]
+    outer_faces = [tuple(v + 8 for v in f) for f in inner_faces]
 
     out = ["FoamFile { version 2.0; format ascii; class dictionary; "
            "object blockMeshDict; }",
            "// Body-wing drone: body component, level %s: n %d, nR %d, "
            "dsW %g m (R1 %g m, R2 %g m); the cube shell |x|_max in [1, 2] "
            "is mapped onto the spherical shell by sphereMesh.py -map"
-           % (level, n, nR, dsW, R1, R2),
+           % (level, n, n_r, ds_w, R1, R2),
            "scale 1;",
            "vertices", "("]
     out += ["    (%g %g %g)  // %d" % (v + (i,)) for i, v in enumerate(verts)]
     out += [");", "blocks", "("]
     for b in blocks:
         out.append("    hex (%s) body (%d %d %d) simpleGrading (1 1 %.12g)"
-                   % (" ".join(str(v) for v in b), n, n, nR, ratio))
+                   % (" ".join(str(v) for v in b), n, n, n_r, ratio))
     out += [");", "edges ();", "boundary", "("]
     out += ["    body", "    {", "        type wall;", "        faces",
             "        ("]
-    out += ["            (%s)" % " ".join(map(str, f)) for f in innerFaces]
+    out += ["            (%s)" % " ".join(map(str, f)) for f in inner_faces]
     out += ["        );", "    }"]
     out += ["    oversetPatch", "    {", "        type overset;",
             "        faces", "        ("]
-    out += ["            (%s)" % " ".join(map(str, f)) for f in outerFaces]
+    out += ["            (%s)" % " ".join(map(str, f)) for f in outer_faces]
     out += ["        );", "    }", ");"]
-    return "\n".join(out) + "\n", dict(level=level, n=n, nR=nR, dsW=dsW,
+    return "\n".join(out) + "\n", dict(level=level, n=n, nR=n_r, dsW=ds_w,
                                        growth=1.0/ratio, R1=R1, R2=R2,
-                                       cells=6*n*n*nR)
+                                       cells=6*n*n*n_r)
 
 
 # The cubed sphere is turned by a fixed rotation (TURN_AXIS, TURN_ANGLE) so

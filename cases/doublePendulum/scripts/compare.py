@@ -314,11 +314,11 @@ def read_state(path):
 def initial_state_checks(case=CASE):
     """Print one PASS/FAIL line per initial-state check; return the number
     of failures"""
-    nFail = 0
+    n_fail = 0
 
     def check(name, ok, value, tol):
-        nonlocal nFail
-        nFail += not ok
+        nonlocal n_fail
+        n_fail += not ok
         print(_line(ok, name, value, tol), flush=True)
 
     try:
@@ -339,7 +339,7 @@ def initial_state_checks(case=CASE):
         print(f"{'PASS' if ok else 'FAIL'} atRestStale_theta2 (qDdot kept:"
               f" the first-order error) {m['theta2']:.3e} > "
               f"{TOL_INITIAL['staleTheta2']:.1e}", flush=True)
-        nFail += not ok
+        n_fail += not ok
 
         folder = "1/uniform/rigidBodyMotionState"
         straight = read_state(os.path.join(
@@ -353,9 +353,9 @@ def initial_state_checks(case=CASE):
                   d <= TOL_INITIAL["restart"], d, TOL_INITIAL["restart"])
     except (OSError, ValueError, KeyError) as err:
         print(f"FAIL initialState {err!r}", flush=True)
-        nFail += 1
+        n_fail += 1
 
-    return nFail
+    return n_fail
 
 
 def table(case=CASE):
