@@ -238,7 +238,7 @@ const Foam::wordList& Foam::RBD::eABAMotion::keys()
     ({
         "solver", "nIter", "accelerationRelaxation", "accelerationDamping",
         "report", "g", "bodies", "restraints", "imposedMotion",
-        "ImposedMotion", "controller"
+        "ImposedMotion", "controller", "q", "qDot"
     });
 
     return modelKeys;

@@ -26,6 +26,7 @@ License
 #include "oversetFvPatch.H"
 #include "oversetFvPatchField.H"
 #include "globalIndex.H"
+#include "points0MotionSolver.H"
 #include "mapDistribute.H"
 #include "stepTimers.H"
 #include "Time.H"
@@ -164,6 +165,86 @@ void Foam::cellCellStencils::octreeInverseDistance::buildZone
     }
 
     bins_[zonei].build(subMesh.cellCentres(), radius);
+
+    if (zonei == settings_.searchBoxFollows())
+    {
+        readFollowPoints0(zonei);
+    }
+}
+
+
+void Foam::cellCellStencils::octreeInverseDistance::readFollowPoints0
+(
+    const label zonei
+)
+{
+    // The motion solvers' reference points (points0, or the mesh's points
+    // in constant/polyMesh): the same whatever the restart time
+    const pointIOField points0(points0MotionSolver::points0IO(mesh_));
+    if (points0.size() != mesh_.nPoints())
+    {
+        FatalErrorInFunction
+            << "searchBoxFollows " << zonei << ": the reference points "
+            << points0.objectPath() << " hold " << points0.size()
+            << " points, the mesh " << mesh_.nPoints()
+            << exit(FatalError);
+    }
+    followPoints0_ = pointField(points0, zoneParts_[zonei].pointMap());
+    followMin0_ = boundBox(followPoints0_, true).min();
+
+    Info<< type() << " : searchBox " << settings_.searchBox()
+        << " (at the reference points " << points0.objectPath().name()
+        << ") follows the translation of zone " << zonei << endl;
+}
+
+
+void Foam::cellCellStencils::octreeInverseDistance::followZone()
+{
+    const label zonei = settings_.searchBoxFollows();
+    if (zonei < 0)
+    {
+        return;
+    }
+
+    // The lower corner of the zone's box: a min over the points, the same
+    // bits on every rank and in serial
+    const labelList& pointMap = zoneParts_[zonei].pointMap();
+    const pointField& points = mesh_.points();
+    searchBoxShift_ = boundBox(points, pointMap, true).min() - followMin0_;
+
+    scalar deviation = 0;
+    forAll(pointMap, i)
+    {
+        deviation =
+            max
+            (
+                deviation,
+                mag(points[pointMap[i]] - followPoints0_[i] - searchBoxShift_)
+            );
+    }
+    reduce(deviation, maxOp<scalar>());
+
+    const scalar allowed = settings_.rigidTolerance()*zoneSearch_[zonei].size();
+    if (deviation > allowed)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "searchBoxFollows " << zonei << ": zone " << zonei
+            << " does not move by a pure translation at time "
+            << mesh_.time().timeName() << " (a point is " << deviation
+            << " from the translation " << searchBoxShift_
+            << " of its reference point, more than rigidTolerance*size "
+            << allowed << "): follow a zone that only translates (the"
+            << " background of eABAMeshMotion), or leave searchBoxFollows"
+            << " out (a fixed box)" << exit(FatalIOError);
+    }
+}
+
+
+Foam::treeBoundBox
+Foam::cellCellStencils::octreeInverseDistance::currentSearchBox() const
+{
+    const treeBoundBox& bb = settings_.searchBox();
+    return treeBoundBox(bb.min() + searchBoxShift_, bb.max() + searchBoxShift_);
 }
 
 
@@ -305,6 +386,8 @@ void Foam::cellCellStencils::octreeInverseDistance::fitZones()
         }
         zoneBb.inflate(1e-6);
     }
+
+    followZone();
 }
 
 
@@ -370,6 +453,9 @@ Foam::cellCellStencils::octreeInverseDistance::octreeInverseDistance
     patchVoxels_(),
     voxelExchange_(),
     cellRadius_(),
+    followPoints0_(),
+    followMin0_(Zero),
+    searchBoxShift_(Zero),
     zoneResidual_(),
     nearlyRigidSaid_(),
     donorGlobal_(),

@@ -37,15 +37,17 @@ bool Foam::cellCellStencils::octreeInverseDistance::voxelsCurrent
     const label zonei,
     const boundBox& bb,
     const labelVector& nDivs
-) const
+)
 {
-    const patchVoxelMap& map = localVoxels_[zonei];
+    patchVoxelMap& map = localVoxels_[zonei];
+    const bool follow = settings_.searchBoxFollows() >= 0;
     if
     (
         !map.allocated()
      || map.nDivs() != nDivs
-     || map.bb() != bb
-     || patchFilledSmallVec_[zonei] != smallVec_
+     || (!follow && map.bb() != bb)
+     || mag(patchFilledSmallVec_[zonei] - smallVec_)
+      > (follow ? 1e-9*mag(smallVec_) : 0)
     )
     {
         return false;
@@ -59,13 +61,30 @@ bool Foam::cellCellStencils::octreeInverseDistance::voxelsCurrent
     {
         return false;
     }
+
+    // A box that follows a zone: the points and the box translated alike
+    // since the fill (within the tolerance) leave the voxels in the box
+    // as they were
+    const vector shift(bb.min() - map.fillBb().min());
+    const vector tol(follow ? cmptMag(smallVec_) : vector::zero);
+    const auto beyond = [&tol](const vector& d)
+    {
+        return
+            mag(d.x()) > tol.x() || mag(d.y()) > tol.y()
+         || mag(d.z()) > tol.z();
+    };
+    if (beyond(bb.span() - map.fillBb().span()))
+    {
+        return false;
+    }
     forAll(pointMap, i)
     {
-        if (points[pointMap[i]] != filledPoints[i])
+        if (beyond(points[pointMap[i]] - filledPoints[i] - shift))
         {
             return false;
         }
     }
+    map.moveBox(bb);
     return true;
 }
 
@@ -217,7 +236,7 @@ void Foam::cellCellStencils::octreeInverseDistance::checkSearchBox
     if (returnReduce(met, maxOp<label>()) != -1)
     {
         FatalIOErrorInFunction(dict_)
-            << "searchBox " << settings_.searchBox()
+            << "searchBox " << currentSearchBox()
             << " does not contain the"
             << " walls of zone " << zonei << " at time "
             << mesh_.time().timeName() << ": e.g. the wall face in "
@@ -317,7 +336,7 @@ void Foam::cellCellStencils::octreeInverseDistance::fillVoxels()
     ws_.patchBb = ws_.zoneBb;
     if (settings_.useSearchBox())
     {
-        ws_.patchBb = treeBoundBoxList(1, settings_.searchBox());
+        ws_.patchBb = treeBoundBoxList(1, currentSearchBox());
     }
     ws_.patchDivs = voxelDivisions();
 

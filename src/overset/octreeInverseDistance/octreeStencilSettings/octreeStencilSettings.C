@@ -52,7 +52,7 @@ Foam::octreeStencilSettings::allowedKeys
 ({
     "method", "search", "holeCutting", "noHoleCut", "maxWalk",
     "rigidTolerance", "layerRelax", "tolerance", "searchBox",
-    "searchBoxDivisions", "log"
+    "searchBoxFollows", "searchBoxDivisions", "log"
 });
 
 
@@ -120,7 +120,8 @@ void Foam::octreeStencilSettings::readNumbers(const dictionary& dict)
 void Foam::octreeStencilSettings::readSearchBox
 (
     const dictionary& dict,
-    const word& typeName
+    const word& typeName,
+    const label nZones
 )
 {
     useSearchBox_ = dict.readIfPresent("searchBox", searchBox_);
@@ -134,6 +135,28 @@ void Foam::octreeStencilSettings::readSearchBox
             << "searchBox " << searchBox_ << " is empty or flat: must be"
             << " (min) (max) with max > min in every direction (a 2-D"
             << " case too: span the mesh's thickness)" << exit(FatalIOError);
+    }
+
+    searchBoxFollows_ = dict.getOrDefault<label>("searchBoxFollows", -1);
+    if
+    (
+        dict.found("searchBoxFollows")
+     && (!useSearchBox_ || searchBoxFollows_ < 0 || searchBoxFollows_ >= nZones)
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "searchBoxFollows " << searchBoxFollows_ << ": must be a zone"
+            << " in [0, " << nZones - 1 << "] (the zoneID values), with a"
+            << " searchBox" << (useSearchBox_ ? "" : " (none given)")
+            << exit(FatalIOError);
+    }
+    if (searchBoxFollows_ >= 0 && search_ != searchType::cached)
+    {
+        FatalIOErrorInFunction(dict)
+            << "searchBoxFollows " << searchBoxFollows_ << " needs search "
+            << searchTypeNames[searchType::cached] << " (search "
+            << searchTypeNames[search_] << " is the stock update, whose box"
+            << " is fixed)" << exit(FatalIOError);
     }
 
     useDivisions_ = dict.readIfPresent("searchBoxDivisions", divisions_);
@@ -235,6 +258,7 @@ Foam::octreeStencilSettings::octreeStencilSettings
     tolerance_(1e-10),
     useSearchBox_(false),
     searchBox_(),
+    searchBoxFollows_(-1),
     useDivisions_(false),
     divisions_(Zero),
     noHoleCut_(),
@@ -249,7 +273,7 @@ Foam::octreeStencilSettings::octreeStencilSettings
             holeCuttingType::incremental
         );
     readNumbers(dict);
-    readSearchBox(dict, typeName);
+    readSearchBox(dict, typeName, nZones);
     readNoHoleCut(dict, nZones);
 }
 

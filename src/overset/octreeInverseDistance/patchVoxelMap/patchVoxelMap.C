@@ -90,6 +90,7 @@ void Foam::patchVoxelMap::addPatchRange
 Foam::patchVoxelMap::patchVoxelMap()
 :
     bb_(),
+    fillBb_(),
     nDivs_(Zero),
     types_(),
     blocks_(),
@@ -332,7 +333,7 @@ void Foam::patchVoxelMap::clear()
         {
             voxelOps::fill
             (
-                types_, bb_, nDivs_, faceBb,
+                types_, fillBb_, nDivs_, faceBb,
                 cellCellStencil::patchCellType::OTHER
             );
         }
@@ -370,7 +371,14 @@ void Foam::patchVoxelMap::reset
         blocks_ = PackedList<1>(nB.x()*nB.y()*nB.z(), 0u);
     }
     bb_ = bb;
+    fillBb_ = bb;
     nDivs_ = nDivs;
+}
+
+
+void Foam::patchVoxelMap::moveBox(const boundBox& bb)
+{
+    bb_ = bb;
 }
 
 
