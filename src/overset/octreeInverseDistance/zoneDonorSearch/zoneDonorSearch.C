@@ -23,7 +23,7 @@ License
 #include "zoneDonorSearch.H"
 #include "indexedOctree.H"
 #include "treeDataCell.H"
-#include "SVD.H"
+#include "rigidFit.H"
 #include "ListOps.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -124,37 +124,6 @@ Foam::scalar Foam::zoneDonorSearch::fitTransform(const UList<point>& points)
 }
 
 
-Foam::tensor Foam::zoneDonorSearch::kabschRotation(const tensor& H)
-{
-    // H = U S V^T, R = V diag(1, 1, det(V U^T)) U^T
-    scalarRectangularMatrix A(3, 3);
-    for (direction i = 0; i < 3; ++i)
-    {
-        for (direction j = 0; j < 3; ++j)
-        {
-            A(i, j) = H(i, j);
-        }
-    }
-    const SVD svd(A);
-    const scalarRectangularMatrix& U = svd.U();
-    const scalarRectangularMatrix& V = svd.V();
-
-    tensor Ut(Zero), Vt(Zero);
-    for (direction i = 0; i < 3; ++i)
-    {
-        for (direction j = 0; j < 3; ++j)
-        {
-            Ut(i, j) = U(i, j);
-            Vt(i, j) = V(i, j);
-        }
-    }
-
-    tensor D(tensor::I);
-    D.zz() = sign(det(Vt & Ut.T()));
-    return Vt & D & Ut.T();
-}
-
-
 Foam::scalar Foam::zoneDonorSearch::fitTransform
 (
     const UList<point>& allPoints,
@@ -211,7 +180,7 @@ Foam::scalar Foam::zoneDonorSearch::fitTransform
     }
     reduce(H, sumOp<tensor>());
 
-    R_ = kabschRotation(H);
+    R_ = rigidFit::kabschRotation(H);
     c_ = c;
 
     scalar maxResidual = 0;
