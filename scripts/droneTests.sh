@@ -2,7 +2,7 @@
 # flapFoam: shell functions of the drone cases' Alltest scripts (sourced,
 # with the project's check functions, scripts/checkFunctions).  Each
 # prints PASS/FAIL lines "PASS [label] ..." (a failure sets status=1):
-# run, motionCycle, plots, copiedCase, result, flightData, quasiSteady,
+# run, motionCycle, climbed, plots, copiedCase, result, flightData, quasiSteady,
 # vacuum.  Needs:
 # python (Debian's python3), the case folder as the working directory,
 # testRuns (the folder of the checks' runs and logs, set by the Alltest),
@@ -89,10 +89,11 @@ plots()
     fi
 }
 
-# motionCycle <label> <run folder> [Allrun options...]: a whole flapping
-# cycle of the mesh motion without flow (Allrun -motionOnly, tiny mesh):
-# the overset assembly at every step (oversetMotionCheck: no zone with more
-# than 25 % holes, no acceptor without donors)
+# motionCycle <label> <run folder> [Allrun options...]: the mesh motion
+# without flow (Allrun -motionOnly, tiny mesh; a whole flapping cycle unless
+# the options say otherwise): the overset assembly at every step
+# (oversetMotionCheck: no zone with more than 25 % holes, no acceptor
+# without donors)
 motionCycle()
 {
     local label="$1" dir="$2"
@@ -106,12 +107,33 @@ motionCycle()
     steps=$(grep -h '^Steps: ' "$dir/log.oversetMotionCheck" 2>/dev/null)
     if [ "$rc" -eq 0 ] && grep -q '^oversetMotionCheck: OK' "$log"
     then
-        pass "[$label] a whole cycle of the mesh motion: $steps" \
+        pass "[$label] the mesh motion to t = $(foamDictionary -entry endTime \
+             -value "$dir/system/controlDict"): $steps" \
              "($((SECONDS - t0)) s)"
     else
         fail "[$label] ./Allrun -motionOnly exited $rc:" \
              "$(grep -h '^oversetMotionCheck: FAILED' "$log" | head -1)" \
              "(see $log)"
+    fi
+}
+
+# climbed <label> <run folder> <q_0> <q_1> <tol>: the last row of the
+# run's joints.dat has heave q_0 and surge q_1 within tol [m] of these
+climbed()
+{
+    local label="$1" dir="$2" z="$3" x="$4" tol="$5" last
+    last=$(tail -n 1 "$dir"/postProcessing/eABAMeshMotion/*/joints.dat \
+        2>/dev/null)
+    if awk -v z="$z" -v x="$x" -v tol="$tol" \
+        '{ exit !(NF > 4 && ($2 - z)^2 <= tol^2 && ($5 - x)^2 <= tol^2) }' \
+        <<< "$last"
+    then
+        pass "[$label] at t = ${last%% *} heave and surge within $tol m of" \
+             "$z and $x m"
+    else
+        fail "[$label] the last row of joints.dat, t q_0 ... q_1: " \
+             "$(cut -d' ' -f1-5 <<< "$last") (expected q_0 $z, q_1 $x," \
+             "within $tol)"
     fi
 }
 

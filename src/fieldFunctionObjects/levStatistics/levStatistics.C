@@ -139,7 +139,8 @@ Foam::functionObjects::levStatistics::levStatistics
     UName_("U"),
     cells_(),
     points_(),
-    points0_()
+    points0_(),
+    noFieldSaid_(false)
 {
     read(dict);
     readZone();
@@ -216,6 +217,18 @@ bool Foam::functionObjects::levStatistics::execute()
 
 bool Foam::functionObjects::levStatistics::write()
 {
+    if (!foundObject<volVectorField>(UName_))
+    {
+        // A run without flow (oversetMotionCheck): said once
+        if (!noFieldSaid_)
+        {
+            noFieldSaid_ = true;
+            WarningInFunction
+                << type() << " " << name() << ": no field " << UName_
+                << " (a run without flow): no rows written" << endl;
+        }
+        return true;
+    }
     const volVectorField& U = lookupObject<volVectorField>(UName_);
     const tmp<volTensorField> tgradU(fvc::grad(U));
     const vector axis(currentAxis());
