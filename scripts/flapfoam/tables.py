@@ -25,7 +25,7 @@ def read_table(path):
             if not words:
                 continue
             if words[0] == "#":
-                if columns is None and len(words) > 1 and words[1] == "time":
+                if columns is None and len(words) > 1 and words[1].lower() == "time":
                     columns = words[1:]
                 continue
             rows.append([float(w) for w in words])
