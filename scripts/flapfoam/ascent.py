@@ -23,8 +23,10 @@ times); -vacuum DIR a run of the same dictionaries without air load
                    null where the run has no row), with -qs max_abs_dx_m and
                    max_abs_dz_m (the run's x = q_1, z = q_0 against the
                    model's over the run), and the paper's figures;
-  trajectory.png   x(t) and z(t) (q_1, q_0), the vacuum and QS runs beside;
-  bodyPitch.png    q_2 [deg] against t f, the cycle ends marked (BW);
+  trajectory.png   x(t) and z(t) (q_1, q_0), the QS run beside, the vacuum
+                   run in x (in z it falls freely);
+  bodyPitch.png    q_2 [deg] against t f, the cycle ends marked, the other
+                   runs beside (BW);
   liftCycles.png   the wing's C_zI over cycles 2, 5, 10, 17 (the load of a
                    row plotted at the time of the flow it comes from);
   lev.png          V' and Gamma over the written times, relative to t' =
@@ -192,10 +194,14 @@ def thin_copy(src, dst, max_bytes):
 
 
 def plot_trajectory(run, others, out):
-    """x(t), z(t) of the run and of the other runs (label: Flight)."""
+    """x(t), z(t) of the run and of the other runs (label, Flight, style);
+    the vacuum run in x only (in z it falls freely, as the paper's figure
+    leaves it out)."""
     fig, axes = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
     for label, flight, style in [("CFD", run, "-")] + others:
         for ax, i in zip(axes, (1, 0)):
+            if label == "vacuum" and i == 0:
+                continue
             ax.plot(flight.t*run.f, 1e3*flight.q[:, i], style, label=label)
     cycle_axes(axes[0], "x = q_1 [mm]", "Ascent: trajectory")
     cycle_axes(axes[1], "z = q_0 [mm]", "")
@@ -203,10 +209,14 @@ def plot_trajectory(run, others, out):
     save(fig, out, "trajectory.png")
 
 
-def plot_pitch(run, out):
-    """The body pitch q_2 and its values at the cycle ends."""
+def plot_pitch(run, others, out):
+    """The body pitch q_2 and its values at the cycle ends, the other runs'
+    beside (the paper's figure: the vacuum run dash-dotted)."""
     fig, ax = plt.subplots(figsize=(8, 4))
-    ax.plot(run.t*run.f, np.degrees(run.q[:, 2]))
+    ax.plot(run.t*run.f, np.degrees(run.q[:, 2]), label="CFD")
+    for label, flight, style in others:
+        ax.plot(flight.t*run.f, np.degrees(flight.q[:, 2]), style,
+                label=label)
     ends = at_cycle_ends(run.t, np.degrees(run.q[:, 2]), run.f)
     ax.plot(np.arange(1, len(ends) + 1), ends, "o", label="cycle ends")
     cycle_axes(ax, "theta = q_2 [deg]", "Body pitch")
@@ -281,7 +291,7 @@ def summarise(inputs):
         s["pitch_deg_at_cycle_end"] = [
             round(float(v), 4) for v in
             at_cycle_ends(run.t, np.degrees(run.q[:, 2]), run.f)]
-        plot_pitch(run, inputs.out)
+        plot_pitch(run, others, inputs.out)
     if inputs.qs:
         s["max_abs_dx_m"], s["max_abs_dz_m"] = max_gaps(run, others[-1][1])
     plot_trajectory(run, others, inputs.out)
