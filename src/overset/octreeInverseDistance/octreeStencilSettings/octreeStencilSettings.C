@@ -137,18 +137,32 @@ void Foam::octreeStencilSettings::readSearchBox
             << " case too: span the mesh's thickness)" << exit(FatalIOError);
     }
 
-    searchBoxFollows_ = dict.getOrDefault<label>("searchBoxFollows", -1);
-    if
-    (
-        dict.found("searchBoxFollows")
-     && (!useSearchBox_ || searchBoxFollows_ < 0 || searchBoxFollows_ >= nZones)
-    )
+    // A zone, or none (the box fixed in space, as without the key)
+    searchBoxFollows_ = -1;
+    if (dict.found("searchBoxFollows"))
     {
-        FatalIOErrorInFunction(dict)
-            << "searchBoxFollows " << searchBoxFollows_ << ": must be a zone"
-            << " in [0, " << nZones - 1 << "] (the zoneID values), with a"
-            << " searchBox" << (useSearchBox_ ? "" : " (none given)")
-            << exit(FatalIOError);
+        ITstream& is = dict.lookup("searchBoxFollows");
+        const token t(is);
+        const bool none = t.isWord() && t.wordToken() == "none";
+        if (t.isLabel())
+        {
+            searchBoxFollows_ = t.labelToken();
+        }
+        if
+        (
+            !none
+         && (
+                !t.isLabel() || !useSearchBox_ || searchBoxFollows_ < 0
+             || searchBoxFollows_ >= nZones
+            )
+        )
+        {
+            FatalIOErrorInFunction(dict)
+                << "searchBoxFollows " << t << ": must be a zone in [0, "
+                << nZones - 1 << "] (the zoneID values), with a searchBox"
+                << (useSearchBox_ ? "" : " (none given)") << ", or none"
+                << exit(FatalIOError);
+        }
     }
     if (searchBoxFollows_ >= 0 && search_ != searchType::cached)
     {
