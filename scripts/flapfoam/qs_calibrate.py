@@ -8,7 +8,7 @@ CL, CD0, CD1 fitted to the run's fluid force on the wing by linear least
 squares.
 
     python3 -m flapfoam.qs_calibrate CASE [-dict DICT] [-wing NAME]
-        [-skip N] [-components xz|xyz] [-out FILE]
+        [-skip N] [-until T] [-components xz|xyz] [-out FILE]
 
 The blade-element force is linear in the coefficients: per strip
     dF = 0.5 rho |u_perp|^2 c dr (CL sin 2a e_L + (CD0 + CD1 (1 - cos 2a)) e_D)
@@ -26,7 +26,8 @@ steps may vary).
 DICT (default CASE/constant/dynamicMeshDict) holds the aerodynamics entry
 (NAME: default its only entry); -skip N leaves out the first N steps (the
 start-up transient; the first row, the initial state whose loads are not
-computed, is always left out).  Prints the fit (coefficients, R^2 and the RMS
+computed, is always left out), -until T the steps after t = T (a fit on the
+first cycles of a longer run, whose later cycles it then predicts).  Prints the fit (coefficients, R^2 and the RMS
 residual relative to the force's range per component, the condition
 number), the mean vertical force of the CFD, of the fitted QS and of the
 QS with Wang's defaults (over the whole flapping cycles of the fitted rows,
@@ -85,7 +86,7 @@ class FlightRows:
     KEYS = ("orientation", "position", "velocity", "angularVelocity",
             "force")
 
-    def __init__(self, case, body, centre_of_mass, skip):
+    def __init__(self, case, body, centre_of_mass, window):
         path = find(case)
         if path is None:
             fail("no postProcessing/flightData/*/flightData.h5 in %s (a CFD"
@@ -95,7 +96,7 @@ class FlightRows:
             t, d = self.read(body)
         except OSError as e:
             fail("%s: cannot read: %s" % (path, e))
-        self.select(t, d, skip)
+        self.select(t, d, window)
         E = d["orientation"][self.rows].reshape(-1, 3, 3)
         arm = E @ centre_of_mass
         self.E, self.omega = E, d["angularVelocity"][self.rows]
@@ -120,9 +121,11 @@ class FlightRows:
             return f["time"][()], {k: f["bodies/%s/%s" % (body, k)][()]
                                    for k in self.KEYS}
 
-    def select(self, t, d, skip):
-        """self.rows: the rows after the initial state and -skip steps;
-        every value finite."""
+    def select(self, t, d, window):
+        """self.rows: the rows after the initial state and -skip steps, up
+        to t = -until (window: (skip, until or None)); every value
+        finite."""
+        skip, until = window
         n = len(t) - 1
         if skip < 0 or skip > n - 3:
             fail("%s: -skip %d: allowed 0 to %d (the file has %d steps"
@@ -130,6 +133,13 @@ class FlightRows:
                  " at least 3)" % (self.path, skip, max(n - 3, 0), n,
                                    t[0], t[-1]))
         self.rows = np.arange(1 + skip, len(t))
+        if until is not None:
+            self.rows = self.rows[t[self.rows] <= until*(1 + 1e-12)]
+            if len(self.rows) < 3:
+                fail("%s: -until %g: %d steps from the start (t = %g) to it;"
+                     " the fit needs at least 3: a later -until (the file"
+                     " ends at t = %g)" % (self.path, until, len(self.rows),
+                                          t[0], t[-1]))
         finite = np.all([np.isfinite(d[k][self.rows]).reshape(
             len(self.rows), -1).all(axis=1) for k in self.KEYS], axis=0)
         bad = np.flatnonzero(~finite)
@@ -282,6 +292,9 @@ def main():
                         " only one)")
     parser.add_argument("-skip", type=int, default=0,
                         help="steps left out at the start (default 0)")
+    parser.add_argument("-until", type=float,
+                        help="leave out the steps after this time [s] (e.g."
+                        " 0.1: the first two cycles at 20 Hz)")
     parser.add_argument("-components", choices=("xz", "xyz"), default="xz")
     parser.add_argument("-out", help="also write the entry to this file")
     args = parser.parse_args()
@@ -294,7 +307,7 @@ def main():
              " (allowed: %s)" % (args.dict, name, body,
                                  ", ".join(coeffs.get("bodies", {}))))
     centre = vec(coeffs["bodies"][body].get("centreOfMass", ["0", "0", "0"]))
-    rows = FlightRows(args.case, body, centre, args.skip)
+    rows = FlightRows(args.case, body, centre, (args.skip, args.until))
     text = report(WingEntry(args.dict, name, entry, coeffs), rows,
                   args.components)
     if args.out:
