@@ -6,7 +6,8 @@ flapfoam: the Python side of flapFoam, one package for the cases, the
 benchmarks and the tests (numpy; scipy, h5py and matplotlib where a module
 says so).  Only the plot modules import matplotlib.
 
-Modules (PEP 8 names; the tools run as python3 -m flapfoam.<module>):
+Modules (PEP 8 names; the tools run as flapfoam <module>, which is
+$FLAPFOAM_PYTHON -m flapfoam <module>; flapfoam -help lists them):
 
   readers
     foam_dict         OpenFOAM dictionaries, rigidBodyMotionState
@@ -54,6 +55,7 @@ Modules (PEP 8 names; the tools run as python3 -m flapfoam.<module>):
     overset_summary   bench/overset's table and chart
     peak_memory       a command's peak memory, summed over its processes
     qs_integrators    the paper's integrator study on the quasi-steady model
+    ascent            a production ascent's results against the paper's
   plots
     plotting          matplotlib set-up and the plots the cases share
     plot_step_timers  the step-timer bar chart
@@ -63,6 +65,7 @@ Modules (PEP 8 names; the tools run as python3 -m flapfoam.<module>):
 
 The package is found through PYTHONPATH, which etc/bashrc sets once
 ($FLAPFOAM_PROJECT_DIR/scripts); no script edits sys.path.  Run a tool as
-python3 -m flapfoam.<tool>; the cases' and benches' scripts import from
-here.
+flapfoam <tool> (bin/flapfoam, on the PATH from etc/bashrc: the interpreter
+of FLAPFOAM_PYTHON, whatever python3 comes first on the PATH); the cases'
+and benches' scripts import from here.
 """

@@ -5,7 +5,7 @@
 The production ascents (the paper's 20-cycle free flights): a run's results
 beside the paper's, as files anyone can check.
 
-    python3 -m flapfoam.ascent RUN -o OUTDIR [-vacuum DIR] [-qs DIR]
+    flapfoam ascent RUN -o OUTDIR [-vacuum DIR] [-qs DIR]
         [-maxMB 20]
 
 RUN is a drone run folder (Allrun -cycles 20, restarted any number of
@@ -307,7 +307,7 @@ def summarise(inputs):
 
 def main(argv=None):
     p = argparse.ArgumentParser(
-        prog="python3 -m flapfoam.ascent",
+        prog="flapfoam ascent",
         description="A production ascent's plots, flight data and "
                     "summary.json beside the paper's figures")
     p.add_argument("run")

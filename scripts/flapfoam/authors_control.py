@@ -8,7 +8,7 @@ The paper authors' flight controllers as flapFoam entries: their
 wangParametrization.C; their keys) rewritten as three imposedMotion entries
 and a `controller` (src/controllers, type PID) that apply the same laws:
 
-    python3 -m flapfoam.authors_control DICT [-solver NAME] [-entry NAME]
+    flapfoam authors_control DICT [-solver NAME] [-entry NAME]
         [-body NAME] [-blend B] [-o FILE]
 
 DICT: their dynamicMeshDict (the model in solvers/NAME, the first with
@@ -197,7 +197,7 @@ class authors_entry:
         loops = "\n".join("        " + l if l else l
                           for l in loops.splitlines())
         return ("// From the paper authors' entry %s (motionType %s):"
-                " python3 -m flapfoam.authors_control\n%s"
+                " flapfoam authors_control\n%s"
                 "controller\n{\n    type PID; update cycle;"
                 " cycleOf flapping; blend %.17g; log on;\n    loops\n    {\n"
                 "%s\n    }\n}\n" % (self.name, self.kind, motions, blend,

@@ -5,7 +5,7 @@
 The CFD run of a drone case against its quasi-steady run on the same tree
 (issue 13's verification): both runs' flight data (flightData.h5).
 
-    python3 -m flapfoam.compare_models CFD_CASE QS_CASE [-o DIR] [-body wing]
+    flapfoam compare_models CFD_CASE QS_CASE [-o DIR] [-body wing]
         [-md FILE]
 
 Prints, and writes as a markdown table with -md: per whole flapping cycle

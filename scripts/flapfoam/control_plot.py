@@ -6,7 +6,7 @@ The closed-loop flight of controlled drone runs (issue 14, src/
 controllers): the controlled quantities against their set-points, the
 controller's outputs, and how well the set-points are held.
 
-    python3 -m flapfoam.control_plot RUN [RUN2 ...] [-o DIR] [-settle T]
+    flapfoam control_plot RUN [RUN2 ...] [-o DIR] [-settle T]
         [-band B1,B2,... | -band LOOP.TERM=B,...] [-check]
 
 RUN: a run folder with constant/dynamicMeshDict (its eABAMeshMotionCoeffs/

@@ -7,7 +7,7 @@ A run's file is postProcessing/flightData/<start>/flightData.h5 (the
 flightData function object, src/flightData): the earliest start folder that
 holds one (restarts append to it).
 
-    python3 -m flapfoam.flight_data check CASE [-rows N]
+    flapfoam flight_data check CASE [-rows N]
         [-attr KEY=VALUE ...] [-log LOG] [-variableStep] [-zero D:i,j]
         [-moving D:i]
         one file; every dataset has the same rows; time strictly increasing
@@ -19,7 +19,7 @@ holds one (restarts append to it).
         log shows completed (a later "Time =" line) has its row; with
         -zero DATASET:i,j columns i, j exactly 0 in every row, with
         -moving DATASET:i column i not 0 in the last row.
-    python3 -m flapfoam.flight_data compare REF CASE [-tol T]
+    flapfoam flight_data compare REF CASE [-tol T]
         [-timeTol S] [-datasets a,b] [-exclude timers]
         the same datasets and rows, time equal (to S seconds: a restart
         starts from the written time, a straight run sums its steps; default

@@ -6,7 +6,7 @@ The table of bench/forwardDynamics: the Google Benchmark JSON of
 flapFoamBench-forwardDynamics (eABA and stock forward dynamics per tree,
 aggregates over interleaved repetitions) as markdown:
 
-    python3 -m flapfoam.forward_dynamics_table BENCHMARK.json > results.md
+    flapfoam forward_dynamics_table BENCHMARK.json > results.md
 """
 
 import json
@@ -78,7 +78,7 @@ def table(data):
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else argv
     if len(argv) != 1:
-        sys.exit("usage: python3 -m flapfoam.forward_dynamics_table "
+        sys.exit("usage: flapfoam forward_dynamics_table "
                  "BENCHMARK.json")
     with open(argv[0]) as f:
         print("\n".join(table(json.load(f))))

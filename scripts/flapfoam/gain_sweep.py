@@ -7,7 +7,7 @@ on the quasi-steady (QS) model: a closed-loop flight from rest at every
 point of a grid of the controller's gains, and how well each holds its
 set-points (flapfoam.control_plot's metrics).
 
-    python3 -m flapfoam.gain_sweep -grid "height.z.Kp=-20:-2:6
+    flapfoam gain_sweep -grid "height.z.Kp=-20:-2:6
         height.z.Kd=-6:0:4" [-cycles 20] [-deltaT 1e-4] [-np 2]
         [-case CASE] [-variant control] [-dir DIR] [-o PREFIX]
         [-band B1,B2,... | -band LOOP.TERM=B,...] [-settle T] [-map X,Y]

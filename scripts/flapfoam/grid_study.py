@@ -21,7 +21,7 @@ s = sign(e32/e21)), the extrapolated value phi_ext = (r21^p phi1 - phi2)/
 |phi1| / (r21^p - 1) (Roache's safety factor 1.25), and each level's error
 against phi_ext.  Oscillatory convergence (s < 0) is flagged.
 
-    python3 -m flapfoam.grid_study CASE ... [-out DIR] [-cycles N]
+    flapfoam grid_study CASE ... [-out DIR] [-cycles N]
 
 CASEs the runs, coarsest first (a run still short of its cycle is listed
 with the time it reached and left out); writes DIR/table.md and

@@ -26,7 +26,7 @@ passes if both are at least 1.8 (or the errors are at round-off) and, on
 the pendulums, its error at deltaT 1e-4 is below 2e-5 rad; on the
 staggered drone if both are within 0.8-1.2.
 
-    python3 -m flapfoam.integrator_order [-systems ...] [-solvers ...]
+    flapfoam integrator_order [-systems ...] [-solvers ...]
         [-nIter ...] [-dir DIR] [-jobs J] [-out TABLE.md]
 
 prints one PASS or FAIL line a combination and the table (also to -out);

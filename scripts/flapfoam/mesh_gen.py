@@ -6,7 +6,7 @@ What the cases' meshGen.py share: the command line, the wing component and
 the background of a level, writing them with their topoSetDicts, and the
 summary (meshGen.json).  The cases add their own components and parameters.
 
-    python3 -m flapfoam.mesh_gen components MESHGEN.json
+    flapfoam mesh_gen components MESHGEN.json
 
 prints the summary's components in merge order, a line each: the name and
 the command run on its points after blockMesh (if any), for
@@ -118,7 +118,7 @@ def components(summary):
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else argv
     if len(argv) != 2 or argv[0] != "components":
-        sys.exit("usage: python3 -m flapfoam.mesh_gen components"
+        sys.exit("usage: flapfoam mesh_gen components"
                  " MESHGEN.json")
     listed = components(argv[1])
     if not listed:

@@ -9,8 +9,8 @@ src/mpiCounters/mpiCounters.H): read a folder into per-rank counts and
 totals, and take the difference of two runs of N1 and N2 steps for the
 traffic of one step.  Standard library only.
 
-    python3 -m flapfoam.mpi_counts DIR                per-rank totals
-    python3 -m flapfoam.mpi_counts DIR1 N1 DIR2 N2    per-rank totals per step
+    flapfoam mpi_counts DIR                per-rank totals
+    flapfoam mpi_counts DIR1 N1 DIR2 N2    per-rank totals per step
 """
 
 import os

@@ -3,7 +3,7 @@
 #     under the GNU General Public License v3 or later (COPYING).
 """Table and chart of the overset stencil benchmark (bench/overset/run).
 
-    python3 -m flapfoam.overset_summary -dir DIR [-startup K] [-o PREFIX] RUN [RUN ...]
+    flapfoam overset_summary -dir DIR [-startup K] [-o PREFIX] RUN [RUN ...]
 
 Each RUN is DIR/<level>-np<N>-<stencil>[-r<round>], a case run by
 cases/singleWingDrone/Allrun, with DIR/<RUN>.memory from flapfoam.peak_memory.

@@ -3,7 +3,7 @@
 #     under the GNU General Public License v3 or later (COPYING).
 """Run a command and report the peak memory of the solver processes it starts.
 
-    python3 -m flapfoam.peak_memory [-p NAME] [-o FILE] -- COMMAND [ARGS ...]
+    flapfoam peak_memory [-p NAME] [-o FILE] -- COMMAND [ARGS ...]
 
 Polls /proc every 0.2 s for processes whose name is NAME (default
 overPimpleDyMFoam) that descend from COMMAND (so that other runs on the

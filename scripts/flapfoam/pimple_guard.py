@@ -8,7 +8,7 @@ against a reference run on the same mesh (the paper's settings: PISO,
 4 correctors, max Co 1, p to 1e-7), over the first whole flapping cycle(s)
 both runs completed.
 
-    python3 -m flapfoam.pimple_guard REF CASE [-cycles N]
+    flapfoam pimple_guard REF CASE [-cycles N]
 
 Per run (its flight data, log.overPimpleDyMFoam, stepTimers.dat):
   - C_xI, C_zI: the wing's force coefficients (plotSingleWing), their mean

@@ -7,9 +7,9 @@ setting, what a simulated flapping cycle cost and how far its flight is
 from the paper's settings on the same mesh (the accuracy guard,
 flapfoam.pimple_guard).
 
-    python3 -m flapfoam.pimple_study DIR [-cycles N] [-reference NAME]
+    flapfoam pimple_study DIR [-cycles N] [-reference NAME]
                                     [-o OUT.md]
-    python3 -m flapfoam.pimple_study DIR -steps K -settings NAME...
+    flapfoam pimple_study DIR -steps K -settings NAME...
                                     [-o OUT.md]
 
 DIR holds the runs <level>-np<N>-<setting> (bench/pimple/run) and, for

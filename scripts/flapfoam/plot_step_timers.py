@@ -3,7 +3,7 @@
 #     under the GNU General Public License v3 or later (COPYING).
 """Bar chart of where each time step's wall-clock time goes (stepTimers).
 
-    python3 -m flapfoam.plot_step_timers [options] INPUT [INPUT ...]
+    flapfoam plot_step_timers [options] INPUT [INPUT ...]
 
 Each INPUT is a stepTimers.dat written by the stepTimers function object, or
 a directory (a case, its postProcessing/ or postProcessing/<name>/) searched

@@ -7,7 +7,7 @@ on a CFD run, as Lee et al. (2016) did on Fluent runs: the coefficients
 CL, CD0, CD1 fitted to the run's fluid force on the wing by linear least
 squares.
 
-    python3 -m flapfoam.qs_calibrate CASE [-dict DICT] [-wing NAME]
+    flapfoam qs_calibrate CASE [-dict DICT] [-wing NAME]
         [-skip N] [-until T] [-components xz|xyz] [-out FILE]
 
 The blade-element force is linear in the coefficients: per strip

@@ -9,7 +9,7 @@ and 3) and symplectic (nIter 1 and 3) at several time steps; the final
 positions x, z against Newmark nIter 3 at the same step and against a
 converged reference (Newmark nIter 3, the finest step / 4).
 
-    python3 -m flapfoam.qs_integrators -dict FILE -cycles 20
+    flapfoam qs_integrators -dict FILE -cycles 20
         -steps "500 5000" -dir DIR -o TABLE.md
 
 Writes a markdown table (differences in mm and in % of the reference's

@@ -8,7 +8,7 @@ drone's constant/dynamicMeshDict.eABA) at every point of a grid of the
 Wang kinematics (the imposedMotion entries of waveform flapping and
 pitching) and the mass, from rest over N whole cycles.
 
-    python3 -m flapfoam.qs_sweep -grid "flapAmplitude=1.0:1.5:10
+    flapfoam qs_sweep -grid "flapAmplitude=1.0:1.5:10
         pitchAmplitude=0.5:1.0:10" [-dict FILE] [-cycles 5]
         [-stepsPerCycle 250] [-solver Newmark] [-nIter N] [-np 2]
         [-dir DIR] [-o PREFIX] [-map X,Y] [-hover PARAM] [-hoverTol 1e-6]

@@ -12,7 +12,7 @@ the two translations, so with the wing's rotations prescribed
     m x'' = F_x,   m z'' = F_z - m g
 is exact; the force is the blade elements' at the wing's current motion.
 
-    python3 -m flapfoam.quasi_steady DYNAMICMESHDICT -cycles 5 -out FILE
+    flapfoam quasi_steady DYNAMICMESHDICT -cycles 5 -out FILE
         [-compare JOINTS.DAT -tol 1e-3]
 
 writes t x z xDot zDot (one row per output step) from rest at t = 0; with

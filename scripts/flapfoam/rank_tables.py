@@ -19,8 +19,8 @@ Per-rank tables of a decomposition, for the scaling bench (bench/scaling):
 - cell_order_gap(polyMesh, decomposition): per rank, the mean distance
   between the two cells of a face in the rank's own cell numbering.
 
-    python3 -m flapfoam.rank_tables -cellDist CELLDIST OUT
-    python3 -m flapfoam.rank_tables -cellOrder POLYMESH DECOMPOSITION...
+    flapfoam rank_tables -cellDist CELLDIST OUT
+    flapfoam rank_tables -cellOrder POLYMESH DECOMPOSITION...
 """
 
 import sys
@@ -157,8 +157,8 @@ def cell_order_gap(poly_mesh, decomposition):
     return np.bincount(rank, weights=gap, minlength=n)/np.maximum(faces, 1)
 
 
-USAGE = """usage: python3 -m flapfoam.rank_tables -cellDist CELLDIST OUT
-       python3 -m flapfoam.rank_tables -cellOrder POLYMESH DECOMPOSITION..."""
+USAGE = """usage: flapfoam rank_tables -cellDist CELLDIST OUT
+       flapfoam rank_tables -cellOrder POLYMESH DECOMPOSITION..."""
 
 
 def main(argv):

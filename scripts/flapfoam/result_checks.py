@@ -7,7 +7,7 @@ tables, fitted entries, sweep tables), each a function returning
 (ok, text) and unit-tested (scripts/tests/test_result_checks.py); the
 scripts call them through
 
-    python3 -m flapfoam.result_checks CHECK ARGS...
+    flapfoam result_checks CHECK ARGS...
 
 which prints "PASS text" or "FAIL text" and exits 0 or 1.  CHECK:
 
@@ -295,7 +295,7 @@ def hold_open(path, seconds, wait=30.0):
 
 def parser():
     p = argparse.ArgumentParser(
-        prog="python3 -m flapfoam.result_checks",
+        prog="flapfoam result_checks",
         description="The result checks of the Alltest scripts.")
     sub = p.add_subparsers(dest="check", required=True)
     sub.add_parser("flight-data-joints").add_argument("case")

@@ -3,7 +3,7 @@
 #     under the GNU General Public License v3 or later (COPYING).
 """The bound stage's table (bench/scaling/run -stages bound).
 
-    python3 -m flapfoam.scaling_bound -dir DIR -levels "fine ..." -np "16 32 48"
+    flapfoam scaling_bound -dir DIR -levels "fine ..." -np "16 32 48"
         -poses "0 5 10 15" -o FILE.md
 
 At kept poses K of the couplings, two decompositions counted at that pose

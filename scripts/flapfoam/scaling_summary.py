@@ -3,7 +3,7 @@
 #     under the GNU General Public License v3 or later (COPYING).
 """Table, model and charts of the scaling bench (bench/scaling/run).
 
-    python3 -m flapfoam.scaling_summary -dir DIR -levels "fine ..." -countLevel L
+    flapfoam scaling_summary -dir DIR -levels "fine ..." -countLevel L
         -countSteps N1 N2 -timeLevel L [-startup K] [-o PREFIX]
 
 Reads what run left in DIR: the counted structure of every level

@@ -22,7 +22,7 @@ the ping-pong.
 
 The command line:
 
-    python3 -m flapfoam.scaling_validate [ARCHIVE ...] [-rounds FILE ...]
+    flapfoam scaling_validate [ARCHIVE ...] [-rounds FILE ...]
         [-levels "coarse medium"] [-calibrate PATTERN ...]
         [-measuredIterations] [-o FILE] [-causes FILE]
 
@@ -548,7 +548,7 @@ ROUNDS = [os.path.join(MEASURED, "device-2026-11-26/session1/runTimed.log")]
 
 def arguments(argv=None):
     parser = argparse.ArgumentParser(
-        prog="python3 -m flapfoam.scaling_validate",
+        prog="flapfoam scaling_validate",
         description="The scaling model against measured runs.")
     parser.add_argument("archives", nargs="*")
     parser.add_argument("-rounds", nargs="+", metavar="FILE", default=[])

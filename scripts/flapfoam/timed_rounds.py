@@ -15,7 +15,7 @@ step [s] rbd overset pimple", then one line per run, named
 level, in the order of LEVELS; a summary.txt is one level's (its folder's
 name).
 
-    python3 -m flapfoam.timed_rounds [-levels "coarse medium"] [-o OUT.md]
+    flapfoam timed_rounds [-levels "coarse medium"] [-o OUT.md]
         FILE...
 """
 
@@ -147,7 +147,7 @@ def cell(row):
 
 def main(argv=None):
     p = argparse.ArgumentParser(
-        prog="python3 -m flapfoam.timed_rounds",
+        prog="flapfoam timed_rounds",
         description=__doc__.split("\n\n")[1])
     p.add_argument("files", nargs="+", metavar="FILE")
     p.add_argument("-levels", default="coarse medium",

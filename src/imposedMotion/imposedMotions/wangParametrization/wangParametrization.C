@@ -115,7 +115,7 @@ Foam::imposedMotions::wangParametrization::readMotionType
                )
             << (
                    xzth
-                 ? " (python3 -m flapfoam.authors_control <this file> writes"
+                 ? " (flapfoam authors_control <this file> writes"
                    " the equivalent imposedMotion and controller entries)"
                  : controller
                  ? " (docs/control.md)"

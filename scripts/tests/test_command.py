@@ -1,0 +1,56 @@
+# License
+#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     under the GNU General Public License v3 or later (COPYING).
+"""bin/flapfoam and flapfoam.__main__: the one command of the tools, run
+with a python3 first on the PATH that has no numpy (a cluster module's,
+conda's, pyenv's)."""
+
+import os
+import subprocess
+
+from flapfoam import __main__ as command
+
+BIN = os.path.join(os.path.dirname(__file__), "..", "..", "bin", "flapfoam")
+
+
+def broken_python_first(tmp_path):
+    """An environment whose first python3 on the PATH lacks numpy, and no
+    FLAPFOAM_PYTHON or PYTHONPATH."""
+    fake = tmp_path / "python3"
+    fake.write_text("#!/bin/sh\necho \"ModuleNotFoundError: No module named"
+                    " 'numpy'\" 1>&2\nexit 1\n")
+    fake.chmod(0o755)
+    env = {k: v for k, v in os.environ.items()
+           if k not in ("FLAPFOAM_PYTHON", "PYTHONPATH")}
+    env["PATH"] = "%s:%s" % (tmp_path, env.get("PATH", ""))
+    return env
+
+
+def test_tools_are_the_runnable_modules():
+    tools = command.tools()
+    assert {"flight_data", "ascent", "qs_calibrate"} <= set(tools)
+    assert "plotting" not in tools and "checks" not in tools
+    assert tools["flight_data"] == \
+        "Read and check the flight data (HDF5) of a drone run."
+
+
+def test_help_and_a_tool_with_a_python3_without_numpy(tmp_path):
+    env = broken_python_first(tmp_path)
+    out = subprocess.run([BIN, "-help"], env=env, capture_output=True,
+                         text=True)
+    assert out.returncode == 0, out.stderr
+    assert "  flight_data " in out.stdout and "  ascent " in out.stdout
+    # a tool that imports numpy and h5py
+    run = tmp_path / "run"
+    out = subprocess.run([BIN, "flight_data", "check", str(run)], env=env,
+                         capture_output=True, text=True)
+    assert "No module named" not in out.stderr
+    assert out.returncode == 1 and "no postProcessing/flightData" in \
+        out.stdout + out.stderr
+
+
+def test_unknown_tool_is_refused(tmp_path):
+    out = subprocess.run([BIN, "flight_dat"], env=broken_python_first(
+        tmp_path), capture_output=True, text=True)
+    assert out.returncode == 2
+    assert "no tool 'flight_dat' (flapfoam -help lists them)" in out.stderr
