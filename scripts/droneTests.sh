@@ -2,7 +2,7 @@
 # flapFoam: shell functions of the drone cases' Alltest scripts (sourced,
 # with the project's check functions, scripts/checkFunctions).  Each
 # prints PASS/FAIL lines "PASS [label] ..." (a failure sets status=1):
-# run, motionCycle, climbed, plots, copiedCase, result, flightData, quasiSteady,
+# run, motionCycle, climbed, cleanKeepsRuns, plots, copiedCase, result, flightData, quasiSteady,
 # vacuum.  Needs:
 # python (Debian's python3), the case folder as the working directory,
 # testRuns (the folder of the checks' runs and logs, set by the Alltest),
@@ -135,6 +135,32 @@ climbed()
              "$(cut -d' ' -f1-5 <<< "$last") (expected q_0 $z, q_1 $x," \
              "within $tol)"
     fi
+}
+
+# cleanKeepsRuns <label>: the case's Allclean in a scratch copy with a
+# generated file, a time folder and two runs: exit 0, says what it removed,
+# keeps the runs (listed) until named or -runs
+cleanKeepsRuns()
+{
+    local label="$1" copy out rc
+    copy="$(mktemp -d "${TMPDIR:-/tmp}/flapFoam-clean-XXXXXX")" || return
+    cp Allclean "$copy/" && mkdir -p "$copy/mesh" "$copy/0.0125" \
+        "$copy/runs/coarse" "$copy/runs/ascent" || return
+    out=$(cd "$copy" && ./Allclean 2>&1)
+    rc=$?
+    if [ "$rc" -eq 0 ] && [ ! -e "$copy/mesh" ] && [ ! -e "$copy/0.0125" ] \
+        && [ -d "$copy/runs/coarse" ] && [[ "$out" == *"removed mesh 0.0125"* ]] \
+        && [[ "$out" == *"kept the runs runs/ascent runs/coarse"* ]] \
+        && (cd "$copy" && ./Allclean runs/coarse > /dev/null) \
+        && [ ! -e "$copy/runs/coarse" ] && [ -d "$copy/runs/ascent" ] \
+        && (cd "$copy" && ./Allclean -runs > /dev/null) && [ ! -e "$copy/runs" ]
+    then
+        pass "[$label] Allclean exits 0, says what it removed, keeps runs/" \
+             "until named or -runs"
+    else
+        fail "[$label] Allclean: exit $rc, '$out' (in $copy)"
+    fi
+    rm -rf "$copy"
 }
 
 # copiedCase <label> <case folder> <Allrun options...>: the case copied
