@@ -2,7 +2,8 @@
 # flapFoam: shell functions of the drone cases' Alltest scripts (sourced,
 # with the project's check functions, scripts/checkFunctions).  Each
 # prints PASS/FAIL lines "PASS [label] ..." (a failure sets status=1):
-# run, motionCycle, climbed, cleanKeepsRuns, plots, copiedCase, result, flightData, quasiSteady,
+# run, motionCycle, climbed, cleanKeepsRuns, lockedFolder, plots,
+# copiedCase, result, flightData, quasiSteady,
 # vacuum.  Needs:
 # python (Debian's python3), the case folder as the working directory,
 # testRuns (the folder of the checks' runs and logs, set by the Alltest),
@@ -161,6 +162,52 @@ cleanKeepsRuns()
         fail "[$label] Allclean: exit $rc, '$out' (in $copy)"
     fi
     rm -rf "$copy"
+}
+
+# lockedFolder <label> <run folder>: a second Allrun on a run folder in
+# use stops naming the running one and touches nothing (here -test, which
+# cleans); a lock file left by a killed driver (kill -9: not locked) is no
+# obstacle; Allrun under mpirun stops at once, making nothing
+lockedFolder()
+{
+    local label="$1" dir="$2" out rc pid
+    rm -rf "$dir"
+    ./Allrun -test -case "$dir" > "$testRuns/log.Alltest.$label" 2>&1 &
+    pid=$!
+    for _ in $(seq 100)
+    do
+        [ -s "$dir/Allrun.lock" ] && break
+        sleep 0.1
+    done
+    out=$(./Allrun -test -case "$dir" 2>&1)
+    rc=$?
+    if [ "$rc" -ne 0 ] && [[ "$out" == *"$dir is in use by another run ("*"Allrun -test -case $dir"* ]] \
+        && wait "$pid" && [ -d "$dir/5e-05" ] && [ ! -e "$dir/Allrun.lock" ]
+    then
+        pass "[$label] a second Allrun on a folder in use: exit $rc, names" \
+             "the running one; the first completes undisturbed"
+    else
+        wait "$pid"
+        fail "[$label] a second Allrun on a folder in use: exit $rc," \
+             "'$(tail -c 300 <<< "$out")'"
+    fi
+    echo "Allrun (PID 999999, killed)" > "$dir/Allrun.lock"
+    if ./Allrun -test -case "$dir" > "$testRuns/log.Alltest.$label.stale" 2>&1
+    then
+        pass "[$label] a lock file left by a killed driver: the next run starts"
+    else
+        fail "[$label] a stale lock file stopped Allrun (see" \
+             "$testRuns/log.Alltest.$label.stale)"
+    fi
+    out=$(OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
+        timeout 60 mpirun -np 2 ./Allrun -test -case "$dir-mpirun" 2>&1)
+    if [[ "$out" == *"started under MPI (OMPI_COMM_WORLD_SIZE=2): run Allrun once"* ]] \
+        && [ ! -e "$dir-mpirun" ]
+    then
+        pass "[$label] mpirun -np 2 ./Allrun: stops at once, nothing made"
+    else
+        fail "[$label] mpirun -np 2 ./Allrun: '$(tail -c 300 <<< "$out")'"
+    fi
 }
 
 # copiedCase <label> <case folder> <Allrun options...>: the case copied
