@@ -210,12 +210,14 @@ lockedFolder()
     fi
 }
 
-# copiedCase <label> <case folder> <Allrun options...>: the case copied
+# copiedCase [-script NAME] <label> <case folder> <options...>: the case copied
 # out of the project tree (without runs/) runs there with only flapFoam's
 # etc/bashrc sourced in a clean environment; a copy without it stops with
 # a message saying what to source
 copiedCase()
 {
+    local script=Allrun
+    [ "$1" = -script ] && { script="$2"; shift 2; }
     local label="$1" case="$2"
     shift 2
     local copy t0=$SECONDS rc
@@ -224,19 +226,19 @@ copiedCase()
         | (cd "$copy" && tar xf -)
     env -i HOME="$HOME" PATH=/usr/bin:/bin bash -c \
         'a=("$@"); set --; . "$0/etc/bashrc" && exec nice -n 10 "${a[@]}"' \
-        "$FLAPFOAM_PROJECT_DIR" "$copy/Allrun" "$@" \
+        "$FLAPFOAM_PROJECT_DIR" "$copy/$script" "$@" \
         > "$testRuns/log.Alltest.$label" 2>&1
     rc=$?
     if [ "$rc" -eq 0 ]
     then
         pass "[$label] a copy in $copy ran with only etc/bashrc:" \
-             "Allrun $* ($((SECONDS - t0)) s)"
+             "$script $* ($((SECONDS - t0)) s)"
     else
-        fail "[$label] the copy's Allrun $* exited $rc (see" \
+        fail "[$label] the copy's $script $* exited $rc (see" \
              "$testRuns/log.Alltest.$label)"
     fi
     expectRefusal -dir "$copy" "$label environment not set" \
-        "source it first" env -i PATH=/usr/bin:/bin "$copy/Allrun" "$@"
+        "source it first" env -i PATH=/usr/bin:/bin "$copy/$script" "$@"
     rm -rf "$copy"
 }
 
