@@ -278,7 +278,7 @@ quasiSteady()
         fail "[$label] Allrun -model quasiSteady $* failed (see $log)"
         return
     fi
-    flightData "$label" check "$dir" -rows "$rows" -attr level=none \
+    flightData "$label" check "$dir" -uniformStep -rows "$rows" -attr level=none \
         -attr stencil=none -attr model=quasiSteady
     labelled "$label" "$python" -m flapfoam.result_checks \
         flight-data-joints "$dir"

@@ -8,10 +8,11 @@ flightData function object, src/flightData): the earliest start folder that
 holds one (restarts append to it).
 
     flapfoam flight_data check CASE [-rows N]
-        [-attr KEY=VALUE ...] [-log LOG] [-variableStep] [-zero D:i,j]
+        [-attr KEY=VALUE ...] [-log LOG] [-uniformStep] [-zero D:i,j]
         [-moving D:i]
         one file; every dataset has the same rows; time strictly increasing
-        with a uniform step (fixed-step runs; -variableStep to skip); no
+        (-uniformStep: with a uniform step, for fixed-step runs; a
+        production run's step is adaptive); no
         NaN but in the first row's loads and timers (the initial state);
         the root attributes case, level, stencil, nRanks, decomposition,
         commit present (and equal to KEY=VALUE); with -rows exactly N rows;
@@ -162,12 +163,12 @@ def tables(case):
 class FileChecks:
     """What check() asserts of a run's file besides its shape and NaNs:
     the rows (None: any), the attributes' values (KEY: VALUE), a killed
-    run's log whose completed steps must have rows, a variable time step,
+    run's log whose completed steps must have rows, a uniform time step,
     datasets' columns exactly zero or moving ("DATASET:i,j" each)."""
     rows: int = None
     attrs: dict = field(default_factory=dict)
     log: str = None
-    variable_step: bool = False
+    uniform_step: bool = False
     zero: list = field(default_factory=list)
     moving: list = field(default_factory=list)
 
@@ -182,13 +183,13 @@ class Tolerances:
     exclude: set = field(default_factory=lambda: {"timers"})
 
 
-def _check_times(name, t, variable_step):
+def _check_times(name, t, uniform_step):
     dt = np.diff(t)
     ok = len(t) > 1 and np.all(dt > 0)
-    if ok and not variable_step:
+    if ok and uniform_step:
         ok = np.max(np.abs(dt - dt[0])) <= 1e-9*abs(dt[0])
     return report(ok, "flightData %s: time strictly increasing%s, %g to %g"
-                  % (name, "" if variable_step else " with a uniform step",
+                  % (name, " with a uniform step" if uniform_step else "",
                      t[0], t[-1]))
 
 
@@ -258,7 +259,7 @@ def check(case, want):
     if want.rows is not None:
         status |= report(n == want.rows, "flightData %s: %d rows (expected"
                          " %d)" % (name, n, want.rows))
-    status |= _check_times(name, t, want.variable_step)
+    status |= _check_times(name, t, want.uniform_step)
     bad = [k for k, v in data.items()
            if np.isnan(np.asarray(v, dtype=float)[1:]).any()]
     status |= report(not bad, "flightData %s: no NaN after the initial row%s"
@@ -341,7 +342,8 @@ def main(argv=None):
     c.add_argument("-rows", type=int)
     c.add_argument("-attr", action="append", default=[])
     c.add_argument("-log")
-    c.add_argument("-variableStep", dest="variable_step", action="store_true")
+    c.add_argument("-uniformStep", dest="uniform_step", action="store_true",
+                   help="also a uniform time step (a fixed-step run)")
     c.add_argument("-zero", action="append", default=[])
     c.add_argument("-moving", action="append", default=[])
     m = sub.add_parser("compare")
@@ -355,7 +357,7 @@ def main(argv=None):
     if a.command == "check":
         return check(a.case, FileChecks(
             a.rows, dict(kv.split("=", 1) for kv in a.attr), a.log,
-            a.variable_step, a.zero, a.moving))
+            a.uniform_step, a.zero, a.moving))
     return compare(a.ref, a.case, Tolerances(
         a.tol, a.time_tol, a.datasets.split(",") if a.datasets else None,
         set(a.exclude.split(",")) if a.exclude else set()))

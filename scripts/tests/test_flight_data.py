@@ -50,15 +50,14 @@ def test_check_passes_a_good_file_and_names_what_fails(tmp_path, capsys):
 def test_check_time_step_and_killed_log(tmp_path, capsys):
     t = np.array([0, 1e-3, 3e-3])
     case = run(tmp_path, "variable", np.zeros((3, 1)), t)
-    assert fd.check(case, fd.FileChecks()) == 1        # not uniform
-    assert fd.check(case, fd.FileChecks(variable_step=True)) == 0
+    # an adaptive step passes by default, not as a uniform one
+    assert fd.check(case, fd.FileChecks(uniform_step=True)) == 1
+    assert fd.check(case, fd.FileChecks()) == 0
     log = tmp_path / "log"
     log.write_text("Time = 0.001\n...\nTime = 0.003\n...\nTime = 0.004\n")
-    assert fd.check(case, fd.FileChecks(variable_step=True,
-                                        log=str(log))) == 0
+    assert fd.check(case, fd.FileChecks(log=str(log))) == 0
     log.write_text("Time = 0.002\nTime = 0.003\n")
-    assert fd.check(case, fd.FileChecks(variable_step=True,
-                                        log=str(log))) == 1
+    assert fd.check(case, fd.FileChecks(log=str(log))) == 1
     assert "missing [0.002]" in lines(capsys)[-1]
 
 
