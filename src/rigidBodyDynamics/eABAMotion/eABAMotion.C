@@ -21,6 +21,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "eABAMotion.H"
+#include "unitConversion.H"
+#include "mathematicalConstants.H"
 #include "eABASolver.H"
 #include "Time.H"
 #include "IOdictionary.H"
@@ -165,6 +167,45 @@ void Foam::RBD::eABAMotion::reportChanges(const dictionary& stateDict) const
 }
 
 
+void Foam::RBD::eABAMotion::checkAmplitudes() const
+{
+    // The joint owning each q index
+    labelList qJoint(nDoF(), -1);
+    for (label i = 1; i < nBodies(); ++i)
+    {
+        for (label k = 0; k < joints()[i].nDoF(); ++k)
+        {
+            qJoint[joints()[i].qIndex() + k] = i;
+        }
+    }
+
+    // An amplitude of a revolute joint is an angle in rad: one past half
+    // a turn is a value in degrees (75 for 75 deg flies the drone metres)
+    for (const imposedMotion& m : imposedMotions_)
+    {
+        scalar A = 0;
+        if (!m.dict().readIfPresent("amplitude", A))
+        {
+            continue;
+        }
+        for (const label qi : m.joints())
+        {
+            const word& type = joints()[qJoint[qi]].type();
+            if (type.size() && type[0] == 'R' && mag(A) > constant::mathematical::pi)
+            {
+                FatalIOErrorInFunction(m.dict())
+                    << "amplitude " << A << " drives the revolute joint "
+                    << type << " (q index " << qi << ") in rad: "
+                    << radToDeg(A) << " deg, more than half a turn (a value"
+                    << " in degrees? " << A << " deg is " << degToRad(A)
+                    << " rad); allowed: |amplitude| <= pi"
+                    << exit(FatalIOError);
+            }
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::RBD::eABAMotion::eABAMotion(const Time& time, const dictionary& dict)
@@ -212,6 +253,7 @@ Foam::RBD::eABAMotion::eABAMotion
         }
     }
 
+    checkAmplitudes();
     readCoeffs(dict);
     solver_ = eABASolver::New(*this, dict.subDict("solver"));
     initialise();
