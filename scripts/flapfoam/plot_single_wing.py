@@ -214,14 +214,33 @@ def force_coefficients(r, out):
     ax.grid(True, alpha=0.3)
     ax.legend()
     save(fig, out, "forceCoefficients.png")
-    n_cycles = int(math.floor((t_f[-1] - t[0])*f + 1e-9))
-    if n_cycles >= 1:
-        sel = t_f <= t[0] + n_cycles/f
-        w = np.gradient(t_f[sel]) if sel.sum() > 1 else np.ones(1)
-        print("plotRun: mean C_xI = %.6g, C_zI = %.6g over %d cycle(s)"
-              % (np.sum(w*Cx[sel])/np.sum(w), np.sum(w*Cz[sel])/np.sum(w),
-                 n_cycles))
+    cycle_means(r, t_f, Cx, Cz)
     print("plotRun: last C_xI = %.6g, C_zI = %.6g" % (Cx[-1], Cz[-1]))
+
+
+def cycle_means(r, t_f, Cx, Cz):
+    """Print, per whole cycle of the run (its end time decides: the load of
+    the last step comes from the flow one step earlier), the mean C_xI and
+    C_zI (weighted by the steps) and x, z at its end; then the means over
+    all of them."""
+    t, f, J, jc = r.t, r.f, r.J, r.jc
+    n_cycles = int(math.floor((t[-1] - t[0])*f + 1e-9))
+    w = np.diff(t)                  # the step each load acted over
+    for k in range(1, n_cycles + 1):
+        sel = (t_f >= t[0] + (k - 1)/f - 1e-12) & (t_f < t[0] + k/f - 1e-12)
+        if sel.any():
+            end = t[0] + k/f
+            print("plotRun: cycle %d: mean C_xI = %.6g, C_zI = %.6g; at its "
+                  "end x = %.6g m, z = %.6g m" % (
+                      k, np.sum(w[sel]*Cx[sel])/np.sum(w[sel]),
+                      np.sum(w[sel]*Cz[sel])/np.sum(w[sel]),
+                      np.interp(end, t, J[:, jc["q_1"]]),
+                      np.interp(end, t, J[:, jc["q_0"]])))
+    if n_cycles >= 1:
+        sel = t_f < t[0] + n_cycles/f - 1e-12
+        print("plotRun: mean C_xI = %.6g, C_zI = %.6g over %d cycle(s)"
+              % (np.sum(w[sel]*Cx[sel])/np.sum(w[sel]),
+                 np.sum(w[sel]*Cz[sel])/np.sum(w[sel]), n_cycles))
 
 
 def prescribed_joints(r, out):
