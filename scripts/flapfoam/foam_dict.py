@@ -2,7 +2,8 @@
 #     This file is part of flapFoam, derived from OpenFOAM: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """
-Minimal OpenFOAM dictionary reader (enough for dynamicMeshDict), the
+Minimal OpenFOAM dictionary reader (enough for dynamicMeshDict; a file
+with $macros or #include is expanded by foamDictionary first), the
 rigidBodyMotionState of a time folder, and an entry set or removed by
 OpenFOAM's foamDictionary.  numpy only.
 """
@@ -13,13 +14,38 @@ import subprocess
 import numpy as np
 
 
-def read_foam_dict(path):
-    """Nested dict of an OpenFOAM dictionary file: sub-dictionaries as dicts,
-    entries as lists of tokens (strings)."""
+def _strip_comments(text):
+    text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
+    return re.sub(r"//[^\n]*", " ", text)
+
+
+def expanded_text(path):
+    """The file as OpenFOAM reads it: with $macros or #directives (#include,
+    #calc, ...) the output of OpenFOAM's foamDictionary -expand (17 digits),
+    else the file itself.  ValueError if foamDictionary cannot expand it."""
     with open(path) as f:
         text = f.read()
-    text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
-    text = re.sub(r"//[^\n]*", " ", text)
+    if not re.search(r"(^|[\s{(;])[$#][\w{]", _strip_comments(text)):
+        return text
+    try:
+        out = subprocess.run(["foamDictionary", "-expand", "-precision", "17",
+                              path], capture_output=True, text=True)
+    except FileNotFoundError:
+        out = None
+    if out is None or out.returncode != 0:
+        why = "no foamDictionary on the PATH" if out is None else \
+            " ".join((out.stderr or out.stdout).split()[-30:])
+        raise ValueError("%s has $macros or #directives; reading it needs"
+                         " OpenFOAM's foamDictionary -expand (source"
+                         " etc/bashrc): %s" % (path, why))
+    return out.stdout
+
+
+def read_foam_dict(path):
+    """Nested dict of an OpenFOAM dictionary file, read as OpenFOAM reads it
+    ($macros, #include: expanded_text): sub-dictionaries as dicts, entries
+    as lists of tokens (strings)."""
+    text = _strip_comments(expanded_text(path))
     tokens = re.findall(r'"[^"]*"|[{}();]|[^\s{}();"]+', text)
     pos = 0
 

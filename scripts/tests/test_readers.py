@@ -123,3 +123,18 @@ def test_solver_log_restart_replaces_the_steps_from_its_start(tmp_path):
 def test_solver_log_step_without_continuity_line_is_nan(tmp_path):
     path = write(tmp_path / "log", "Time = 1\nExecutionTime = 1 s\n")
     assert math.isnan(solver_log.read_log(path)[0][1])
+
+
+def test_dictionary_with_macros_and_include_read_as_openfoam(tmp_path):
+    # what the solver reads: $macros expanded, #include followed (by
+    # OpenFOAM's foamDictionary -expand, at 17 digits)
+    from flapfoam.foam_dict import read_foam_dict
+    (tmp_path / "inc").write_text("extra { a 1; }\n")
+    d = tmp_path / "dynamicMeshDict"
+    d.write_text("FoamFile { version 2.0; format ascii; class dictionary;"
+                 " object dynamicMeshDict; }\namp 1.3089969389957472;\n"
+                 "coeffs { flapping { amplitude $amp; frequency 20; } }\n"
+                 "#include \"inc\"\n")
+    r = read_foam_dict(str(d))
+    assert r["coeffs"]["flapping"]["amplitude"] == ["1.3089969389957472"]
+    assert r["extra"]["a"] == ["1"]
