@@ -32,7 +32,7 @@ Reference values (docs/paper.md section 3):
   S = pi/4 c_r R = R cbar (planform area of the wing);
   U_ref = 4 f A_phi R2,  R2 = sqrt(int c r^2 dr / S), the radius of
   gyration of the planform ABOUT THE FLAPPING AXIS: r is measured from the
-  axis, from R0 (root) to R0 + R (tip), c = c(r - R0) of wingGeometry.py.
+  axis, from R0 (root) to R0 + R (tip), c = c(r - R0) of flapfoam.wing_geometry.
   Closed form for the semi-ellipse: R2^2 = R0^2 + 8/(3 pi) R0 R + R^2/4,
   R2 = 45.67 mm, U_ref = 4.783 m/s (r from the root instead: R2 = R/2).
   f, A_phi from the flapping entry, rho from rhoInf of the dictionary.
