@@ -208,10 +208,16 @@ def main(argv=None):
     args = parser.parse_args(argv)
     levels = []
     for case in args.cases:
+        name = os.path.basename(os.path.normpath(case))
+        if not os.path.isfile(os.path.join(case, "constant", "polyMesh",
+                                           "owner")):
+            print("grid_study: level %s left out: no run with a mesh in %s"
+                  % (name, case))
+            continue
         try:
             levels.append(read_level(case, args.cycles))
-        except SystemExit as short:
-            print("grid_study: left out: %s" % short)
+        except (SystemExit, OSError, ValueError, KeyError) as short:
+            print("grid_study: level %s left out: %s" % (name, short))
     if not levels:
         return 1
     text = table(levels)
