@@ -112,7 +112,7 @@ def chart(inputs, labels, n_startup, out):
                              % (path, n_startup,
                                 (", missing " + " ".join(missing))
                                 if columns else ""))
-        means.append(summary(label, columns, data))
+        means.append(summary(label, columns, data, n_startup))
         columns_list.append(columns)
     plot(labels, means, columns_list, out)
 

@@ -134,32 +134,88 @@ def read_input(path, n_startup):
     return columns, data
 
 
-def summary(label, columns, data):
-    """Print the numbers; return the mean per step of each column."""
+# The parts of a step as a tree: (label, columns summed, children); a node
+# whose columns a run lacks (or are all zero: no flow in a quasi-steady
+# run) is left out; "rest" rows are the parent less its children (of the
+# step: "other", the function objects and writes, preUpdate among them)
+STENCIL_PARTS = ("Transform", "Voxels", "Holes", "Donors", "Flood",
+                 "Weights")
+TREE = ("step (total)", ("total",), (
+    ("rbd", ("rbd",), ()),
+    ("overset", ("overset",), (
+        ("move points", ("oversetMovePoints",), (
+            ("stencil update", ("oversetStencil",)
+             + tuple("oversetStencil" + p for p in STENCIL_PARTS),
+             tuple((p.lower(), ("oversetStencil" + p,), ())
+                   for p in STENCIL_PARTS)),)),
+        ("addressing", ("oversetAddressing",), ()),
+        ("interpolate", ("oversetInterpolate",), ()))),
+    ("pimple", ("pimple",), (
+        ("momentum", ("pimpleMomentum", "pimpleMomentumSolve"), (
+            ("solve", ("pimpleMomentumSolve",), ()),)),
+        ("pressure", ("pimplePressure", "pimplePressureSolve"), (
+            ("solve", ("pimplePressureSolve",), ()),)),
+        ("turbulence", ("pimpleTurbulence", "pimpleOtherSolve"), ()),
+        ("overset interpolation", ("pimpleOversetInterpolate",), ())))))
+
+
+def tree_rows(col, node=TREE, depth=0):
+    """(depth, label, per-step values) of the tree's nodes that the
+    columns col hold (not all zero), each parent's rest after its
+    children."""
+    label, names, children = node
+    if not any(n in col for n in names):
+        return []
+    v = sum(col[n] for n in names if n in col)
+    if depth > 0 and not np.any(v):
+        return []
+    rows = [(depth, label, v)]
+    kids = [r for c in children for r in tree_rows(col, c, depth + 1)]
+    if kids:
+        rows += kids
+        rest = v - sum(r[2] for r in kids if r[0] == depth + 1)
+        rows.append((depth + 1, "other (function objects, writes)"
+                     if depth == 0 else "rest", rest))
+    return rows
+
+
+def summary(label, columns, data, n_startup=None):
+    """Print the parts of a step as a tree (mean and median per step, the
+    share of the step; each part inside its parent, the shares of a
+    parent's rows adding up to its own), the counts apart and the closure;
+    return the mean per step of each column."""
     col = {c: data[:, i] for i, c in enumerate(columns)}
     total = col["total"]
-    parts = col["rbd"] + col["overset"] + col["pimple"]
+    parts = sum(col[g] for g in ("rbd", "overset", "pimple") if g in col)
     closure = np.abs(parts - total)/np.where(total > 0, total, 1)
-    col_other = total - parts
     mean_total = total.mean()
 
-    print("%s: %d steps, time %g to %g" %
-          (label, len(total), col["time"][0], col["time"][-1]))
-    print("    %-26s %14s %14s %8s" % ("part", "mean [s]", "median [s]",
-                                       "share"))
-    names = [c for c in columns if c != "time"]
-    names.insert(names.index("total") + 1, "other")
-    means = {}
-    for name in names:
-        v = col_other if name == "other" else col[name]
-        means[name] = v.mean()
-        share = "-" if is_count(name) else \
-            "%7.2f%%" % (100*v.mean()/mean_total)
-        print("    %-26s %14.6g %14.6g %8s" %
-              (name, v.mean(), np.median(v), share))
-    print("    closure |rbd + overset + pimple - total|/total: "
-          "max %.2f%%, mean %.2f%% (step at time %g)" %
-          (100*closure.max(), 100*closure.mean(),
-           col["time"][np.argmax(closure)]))
+    print("%s: %d steps, time %g to %g%s" % (
+        label, len(total), col["time"][0], col["time"][-1],
+        "" if n_startup is None else " (the first %d step(s) of each start"
+        " left out: start-up)" % n_startup))
+    print("    %-36s %12s %12s %8s" % ("part [s per step]", "mean",
+                                       "median", "share"))
+    # a run without flow (the quasi-steady model): no overset or pimple
+    # rows (their bare columns only time the calls), no closure
+    flow = "oversetMovePoints" in col or "pimpleMomentum" in col
+    if not flow:
+        col = {c: v for c, v in col.items() if c not in ("overset", "pimple")}
+    for depth, name, v in tree_rows(col):
+        print("    %-36s %12.4g %12.4g %7.2f%%" % (
+            "  "*depth + name, v.mean(), np.median(v),
+            100*v.mean()/mean_total if mean_total > 0 else 0))
+    counts = [c for c in columns if is_count(c)]
+    if counts:
+        print("    counts per step (mean): " + ", ".join(
+            "%s %.4g" % (c, col[c].mean()) for c in counts))
+    if flow:
+        print("    closure |rbd + overset + pimple - total|/total: max"
+              " %.2f%%, mean %.2f%% (step at time %g)" % (
+                  100*closure.max(), 100*closure.mean(),
+                  col["time"][np.argmax(closure)]))
+    means = {c: data[:, i].mean() for i, c in enumerate(columns)
+             if c != "time"}
+    means["other"] = (total - parts).mean()
     return means
 

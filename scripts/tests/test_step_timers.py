@@ -4,6 +4,7 @@
 """flapfoam.step_timers: the stepTimers.dat reader, restarts, the pimple
 split."""
 
+import numpy as np
 import pytest
 
 from flapfoam import step_timers
@@ -97,3 +98,44 @@ def test_chart_command_line(tmp_path):
     assert out.stat().st_size > 1000
     with pytest.raises(SystemExit, match="no steps after 5 start-up rows"):
         plot_step_timers.main([str(timers), "-n", "5", "-o", str(out)])
+
+
+def test_summary_is_a_tree_whose_parts_add_up(capsys):
+    from flapfoam.step_timers import summary, tree_rows
+    cols = ["time", "rbd", "overset", "pimple", "total", "oversetMovePoints",
+            "oversetStencil", "oversetStencilDonors", "pimpleMomentum",
+            "pimpleMomentumSolve", "pimplePressure", "pimplePressureSolve",
+            "pimpleTurbulence", "pIterations1"]
+    row = [1e-3, 0.1, 0.3, 1.0, 1.5, 0.2, 0.05, 0.1, 0.2, 0.1, 0.1, 0.4,
+           0.1, 40]
+    data = np.array([row, row])
+    col = {c: data[:, i] for i, c in enumerate(cols)}
+    rows = tree_rows(col)
+    # each parent's children (rest included) add up to it
+    for k, (depth, name, v) in enumerate(rows):
+        kids = []
+        for d2, _, v2 in rows[k + 1:]:
+            if d2 <= depth:
+                break
+            if d2 == depth + 1:
+                kids.append(v2[0])
+        if kids:
+            assert sum(kids) == pytest.approx(v[0], abs=1e-12), name
+    names = [("  "*d + n) for d, n, _ in rows]
+    assert "    move points" in names and "      stencil update" in names
+    assert "        donors" in names and "    pressure" in names
+    summary("run", cols, data, 2)
+    out = capsys.readouterr().out
+    assert "(the first 2 step(s) of each start left out: start-up)" in out
+    assert "counts per step (mean): pIterations1 40" in out
+    assert "pIterations1 " not in out.split("counts per step")[0]
+
+
+def test_summary_of_a_run_without_flow_has_no_flow_rows(capsys):
+    from flapfoam.step_timers import summary
+    cols = ["time", "rbd", "overset", "pimple", "total"]
+    data = np.array([[1e-5, 2e-5, 0.0, 1e-8, 5e-5]]*3)
+    summary("qs", cols, data)
+    out = capsys.readouterr().out
+    assert "rbd" in out and "pimple" not in out and "overset" not in out
+    assert "closure" not in out
