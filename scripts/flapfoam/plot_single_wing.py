@@ -87,6 +87,7 @@ class Run:
     t: object
     source: str
     ref: Reference
+    model: str = "CFD"
 
     @property
     def joints(self):
@@ -121,10 +122,24 @@ def reference_values(coeffs):
                      0.5*rho*geo.planform_area()*Uref**2)
 
 
+def model_label(case, coeffs):
+    """'CFD', or for a quasi-steady run (the flight data's model attribute)
+    the coefficients that flew: 'QS: CL .., CD0 .., CD1 ..'."""
+    if flight_data.find(case) is None or \
+            flight_data.load(case)[0].get("model") != "quasiSteady":
+        return "CFD"
+    wings = [e for e in coeffs.get("aerodynamics", {}).values()
+             if isinstance(e, dict)]
+    return "QS: " + "; ".join(", ".join(
+        "%s %.4g" % (k, float(w[k][0])) for k in ("CL", "CD0", "CD1")
+        if k in w) for w in wings)
+
+
 def read_run(case, dict_path):
     """The run's tables, prescribed joints and reference values; prints
     them."""
-    ref = reference_values(multibody_coeffs(dict_path))
+    coeffs = multibody_coeffs(dict_path)
+    ref = reference_values(coeffs)
 
     base = os.path.join(case, "postProcessing", "eABAMeshMotion")
     tables = flight_data.tables(case)
@@ -151,7 +166,9 @@ def read_run(case, dict_path):
           "quadrature %.6g), U_ref = 4 f A_phi R2 = %.6g m/s, rho = %g"
           % (geo.planform_area(), geo.radius_of_gyration(),
              geo.radius_of_gyration_quadrature(), ref.Uref, ref.rho))
-    return Run(J, B, jc, bc, t, source, ref)
+    model = model_label(case, coeffs)
+    print("plotRun: model %s" % model)
+    return Run(J, B, jc, bc, t, source, ref, model)
 
 
 def trajectory(r, out):
@@ -161,7 +178,8 @@ def trajectory(r, out):
     z = J[:, jc["q_0"]]
     fig = path(x, z, t, (
         "x = q_1 (Tx) [mm]", "z = q_0 (Tz) [mm]",
-        "Single-wing drone: trajectory of the surge link"), lw=1.2)
+        "Single-wing drone: trajectory of the surge link (%s)" % r.model),
+        lw=1.2)
     save(fig, out, "trajectory.png")
     print("plotRun: final x = %.6g m, z = %.6g m, xDot = %.6g, zDot = %.6g "
           "m/s" % (x[-1], z[-1], J[-1, jc["qDot_1"]], J[-1, jc["qDot_0"]]))
