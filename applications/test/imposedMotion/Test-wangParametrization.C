@@ -299,7 +299,7 @@ TEST(Errors, WangParametrizationBadInput)
         wangParametrizationText("motionType midStartControl_xzth_linearPD;"),
         {
             "'motionType'", "midStartControl_xzth_linearPD",
-            "flight controller", "flapfoam.authors_control"
+            "flight controller", "flapfoam authors_control"
         }
     );
     expectMotionError
