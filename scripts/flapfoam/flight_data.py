@@ -129,6 +129,19 @@ def load(case):
     return retried(read, path)
 
 
+def model_label(attrs, coeffs):
+    """'CFD', or for a quasi-steady run (the flight data's model attribute,
+    attrs) the coefficients that flew, from the multibody coefficients
+    (coeffs: its aerodynamics entries): 'QS: CL .., CD0 .., CD1 ..'."""
+    if attrs.get("model") != "quasiSteady":
+        return "CFD"
+    wings = [e for e in coeffs.get("aerodynamics", {}).values()
+             if isinstance(e, dict)]
+    return "QS: " + "; ".join(", ".join(
+        "%s %.4g" % (k, float(w[k][0])) for k in ("CL", "CD0", "CD1")
+        if k in w) for w in wings)
+
+
 def tables(case):
     """The joints.dat and bodies.dat tables (columns, rows) from the run's
     flightData.h5, or None without one.  The loads of a row are those of

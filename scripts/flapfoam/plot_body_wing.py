@@ -46,7 +46,8 @@ from flapfoam.wang import wang_joints
 @dataclass
 class Run:
     """A run's flight data (attrs, d: {dataset: array}), times t, joints'
-    q and qDot, prescribed joints (wang), flapping frequency f and t f."""
+    q and qDot, prescribed joints (wang), flapping frequency f, t f and
+    the model that flew (flight_data.model_label)."""
     attrs: dict
     d: dict
     t: object
@@ -55,16 +56,21 @@ class Run:
     wang: dict
     f: float
     tf: object
+    model: str
 
 
 def read_run(case):
-    """The run's flight data and Wang joints."""
+    """The run's flight data, Wang joints and model; prints the model."""
     attrs, d = flight_data.load(case)
     t = d["time"]
-    wang = wang_joints(multibody_coeffs(os.path.join(case, "constant",
-                                                   "dynamicMeshDict")))
+    coeffs = multibody_coeffs(os.path.join(case, "constant",
+                                           "dynamicMeshDict"))
+    wang = wang_joints(coeffs)
     f = wang[3].frequency if 3 in wang else 20.0
-    return Run(attrs, d, t, d["joints/q"], d["joints/qDot"], wang, f, f*t)
+    model = flight_data.model_label(attrs, coeffs)
+    print("plotRun: model %s" % model)
+    return Run(attrs, d, t, d["joints/q"], d["joints/qDot"], wang, f, f*t,
+               model)
 
 
 def trajectory(r, out):
@@ -73,7 +79,8 @@ def trajectory(r, out):
     c = d["bodies/body/position"]
     fig = path(c[:, 0], c[:, 2], t, (
         "x [mm]", "z [mm]",
-        "Body-wing drone: path of the body's centre of mass"))
+        "Body-wing drone: path of the body's centre of mass (%s)"
+        % r.model))
     save(fig, out, "trajectory.png")
     return c
 
@@ -85,7 +92,7 @@ def body_pitch(r, out):
     ax.plot(tf, np.degrees(q[:, 2]))
     ax.set_xlabel("t f [cycles]")
     ax.set_ylabel("theta = q_2 [deg]")
-    ax.set_title("Body pitch")
+    ax.set_title("Body pitch (%s)" % r.model)
     ax.grid(True, alpha=0.3)
     save(fig, out, "bodyPitch.png")
 
@@ -102,7 +109,7 @@ def coefficients(r, out):
         ax.plot(tl, C[:, 0], label="%s C_xI" % body)
         ax.plot(tl, C[:, 1], label="%s C_zI" % body)
     cycle_axes(ax, "C = F / (0.5 rho S U_ref^2)",
-              "Force coefficients (global frame)")
+               "Force coefficients (global frame; %s)" % r.model)
     ax.legend(fontsize=8)
     save(fig, out, "forceCoefficients.png")
 

@@ -122,19 +122,6 @@ def reference_values(coeffs):
                      0.5*rho*geo.planform_area()*Uref**2)
 
 
-def model_label(case, coeffs):
-    """'CFD', or for a quasi-steady run (the flight data's model attribute)
-    the coefficients that flew: 'QS: CL .., CD0 .., CD1 ..'."""
-    if flight_data.find(case) is None or \
-            flight_data.load(case)[0].get("model") != "quasiSteady":
-        return "CFD"
-    wings = [e for e in coeffs.get("aerodynamics", {}).values()
-             if isinstance(e, dict)]
-    return "QS: " + "; ".join(", ".join(
-        "%s %.4g" % (k, float(w[k][0])) for k in ("CL", "CD0", "CD1")
-        if k in w) for w in wings)
-
-
 def read_run(case, dict_path):
     """The run's tables, prescribed joints and reference values; prints
     them."""
@@ -166,7 +153,8 @@ def read_run(case, dict_path):
           "quadrature %.6g), U_ref = 4 f A_phi R2 = %.6g m/s, rho = %g"
           % (geo.planform_area(), geo.radius_of_gyration(),
              geo.radius_of_gyration_quadrature(), ref.Uref, ref.rho))
-    model = model_label(case, coeffs)
+    attrs = flight_data.load(case)[0] if flight_data.find(case) else {}
+    model = flight_data.model_label(attrs, coeffs)
     print("plotRun: model %s" % model)
     return Run(J, B, jc, bc, t, source, ref, model)
 

@@ -83,3 +83,14 @@ def test_command_line(tmp_path, capsys):
     assert fd.main(["check", case, "-attr", "stencil=walk"]) == 1
     assert fd.main(["compare", case, case, "-datasets", "joints/q"]) == 0
     assert "per dataset: joints/q 0.0e+00" in lines(capsys)[-1]
+
+
+def test_model_label_names_the_coefficients_that_flew():
+    coeffs = {"aerodynamics": {"wing": {"type": ["quasiSteady"],
+                                        "CL": ["1.6572591"],
+                                        "CD0": ["0.12519382"],
+                                        "CD1": ["1.5056736"]}}}
+    assert fd.model_label({"model": "quasiSteady"}, coeffs) == \
+        "QS: CL 1.657, CD0 0.1252, CD1 1.506"
+    assert fd.model_label({"model": "cfd"}, coeffs) == "CFD"
+    assert fd.model_label({}, coeffs) == "CFD"

@@ -22,7 +22,10 @@ case) the folders sw, bw, bw-Tz, bw-TzRy:
                                (x = q_1, z = q_0: the surge link of SW, the
                                body's centre of mass of BW);
   quasiSteadyBodyPitch.png     the body pitch theta = q_2 [deg] of BW and
-                               TzRy (Tz holds it at zero).
+                               TzRy (Tz holds it at zero);
+
+each legend with the coefficients that flew (each case's defaults: fitted
+on its CFD).
 
 Prints each run's wall time and final x, z (and theta).  Exit status
 non-zero if a run fails or its flight data are missing.
@@ -39,6 +42,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 CASE = os.path.dirname(HERE)
 from flapfoam import flight_data
+from flapfoam.foam_dict import multibody_coeffs
 from flapfoam.plotting import cycle_axes, plt, save
 
 # name, case folder, Allrun options, legend label, line style (Tz dashed:
@@ -77,13 +81,14 @@ def trajectories(data, out):
     """x(t), z(t) of every run on one figure."""
     fig, axes = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
     for (name, _, _, label, style) in RUNS:
-        t, q = data[name]
+        t, q, model = data[name]
+        label = "%s, %s" % (label, model)
         axes[0].plot(FREQUENCY*t, 1e3*q[:, 1], style, label=label)
         axes[1].plot(FREQUENCY*t, 1e3*q[:, 0], style, label=label)
     cycle_axes(axes[0], "x [mm]", "Quasi-steady wings: horizontal position")
     cycle_axes(axes[1], "z [mm]", "Vertical position")
     axes[0].set_xlabel("")
-    axes[0].legend()
+    axes[0].legend(fontsize=7)
     save(fig, out, "quasiSteadyTrajectories.png")
 
 
@@ -92,10 +97,11 @@ def body_pitch(data, out):
     fig, ax = plt.subplots(figsize=(8, 4))
     for (name, _, _, label, _) in RUNS:
         if name in ("bw", "bw-TzRy"):
-            t, q = data[name]
-            ax.plot(FREQUENCY*t, np.degrees(q[:, 2]), label=label)
+            t, q, model = data[name]
+            ax.plot(FREQUENCY*t, np.degrees(q[:, 2]),
+                    label="%s, %s" % (label, model))
     cycle_axes(ax, "theta = q_2 [deg]", "Quasi-steady wings: body pitch")
-    ax.legend()
+    ax.legend(fontsize=7)
     save(fig, out, "quasiSteadyBodyPitch.png")
 
 
@@ -120,15 +126,17 @@ def main():
         folder = os.path.join(base, name)
         if flight_data.find(folder) is None:
             sys.exit("plotQuasiSteady: no flight data in %s" % folder)
-        _, d = flight_data.load(folder)
-        data[name] = (d["time"], d["joints/q"])
-        t, q = data[name]
+        attrs, d = flight_data.load(folder)
+        model = flight_data.model_label(attrs, multibody_coeffs(
+            os.path.join(folder, "constant", "dynamicMeshDict")))
+        data[name] = (d["time"], d["joints/q"], model)
+        t, q, _ = data[name]
         wall = (" in %.2f s" % walls[name]) if name in walls else ""
         pitch = (", theta = %.4g deg" % np.degrees(q[-1, 2])
                  if name.startswith("bw") else "")
         print("plotQuasiSteady: %-8s %.4g cycles%s: x = %.5g mm, z = %.5g "
-              "mm%s" % (name, FREQUENCY*(t[-1] - t[0]), wall, 1e3*q[-1, 1],
-                        1e3*q[-1, 0], pitch))
+              "mm%s (%s)" % (name, FREQUENCY*(t[-1] - t[0]), wall,
+                             1e3*q[-1, 1], 1e3*q[-1, 0], pitch, model))
     trajectories(data, out)
     body_pitch(data, out)
     print("plotQuasiSteady: wrote %s/quasiSteady{Trajectories,BodyPitch}.png"
