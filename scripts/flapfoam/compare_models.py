@@ -1,9 +1,9 @@
 # License
-#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """
 The CFD run of a drone case against its quasi-steady run on the same tree
-(issue 13's verification): both runs' flight data (flightData.h5).
+(the quasi-steady model's verification): both runs' flight data (flightData.h5).
 
     flapfoam compare_models CFD_CASE QS_CASE [-o DIR] [-body wing]
         [-md FILE]

@@ -1,8 +1,8 @@
 # License
-#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """
-The closed-loop flight of controlled drone runs (issue 14, src/
+The closed-loop flight of controlled drone runs (src/
 controllers): the controlled quantities against their set-points, the
 controller's outputs, and how well the set-points are held.
 

@@ -1,8 +1,8 @@
 # License
-#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """
-A gain sweep of a drone's flight controller (issue 14, src/controllers)
+A gain sweep of a drone's flight controller (src/controllers)
 on the quasi-steady (QS) model: a closed-loop flight from rest at every
 point of a grid of the controller's gains, and how well each holds its
 set-points (flapfoam.control_plot's metrics).

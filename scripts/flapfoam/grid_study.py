@@ -1,8 +1,8 @@
 # License
-#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """
-The grid study of the single-wing drone (issue 26; the paper's section 5):
+The grid study of the single-wing drone (the paper's section 5):
 one whole flapping cycle from rest on each mesh level, the case's defaults,
 and per level
 

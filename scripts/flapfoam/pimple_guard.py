@@ -1,5 +1,5 @@
 # License
-#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """
 The accuracy guard of the PIMPLE study (bench/pimple): a drone run (the
@@ -20,7 +20,7 @@ Per run (its flight data, log.overPimpleDyMFoam, stepTimers.dat):
   - steps, wall seconds (the stepTimers "total" of every step) and CPU
     seconds (ExecutionTime) of the cycles, pressure iterations per step.
 
-The guard (issue 25), a PASS/FAIL line each:
+The guard, a PASS/FAIL line each:
   - cycle-mean C_xI and C_zI within 1 % of the reference's (relative to
     the larger of the two means' magnitudes: C_xI's mean is near zero);
   - max |C_zI(t) - C_zI,ref(t)|, both averaged over 1 % of the cycle
@@ -49,7 +49,7 @@ from flapfoam.checks import report
 from flapfoam.foam_dict import multibody_coeffs
 from flapfoam.plot_single_wing import coefficients, reference_values
 
-# The guard's margins (issue 25)
+# The guard's margins
 MEAN_TOL = 0.01         # cycle means, of the larger mean magnitude
 SERIES_TOL = 0.03       # instantaneous C_zI, of its range
 POSITION_TOL = 0.01     # x, z after the cycles, of the excursion

@@ -1,5 +1,5 @@
 # License
-#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """The charts of the scaling bench (flapfoam.scaling_summary's data), for each level of
 -levels: PREFIX-<level>-step.png (the model's step against ranks per method,

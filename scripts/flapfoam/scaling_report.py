@@ -1,10 +1,10 @@
 # License
-#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """The markdown tables of the scaling bench (flapfoam.scaling_summary's data): the
 counted structure, the counted traffic, the model's costs, the model
 against the timed runs, the model's step per method and ranks, and the
-goals of issue 11 part 3 for oversetGraph."""
+goals set for oversetGraph at 16-48 ranks."""
 
 METHODS = ["simple", "hierarchical", "scotch", "metis", "oversetGraph"]
 SHORT = {"inverseDistance": "ID", "octreeInverseDistance": "octree"}
@@ -222,7 +222,7 @@ def model_table(data, level):
 def goals(data, level):
     """The goals of part 3 for oversetGraph at 16-48 ranks."""
     st, model = data["structure"][level], data["model"]
-    lines = ["", "### Goals (issue 11 part 3), oversetGraph, SW %s" % level, "",
+    lines = ["", "### Goals at 16-48 ranks, oversetGraph, SW %s" % level, "",
              "Remote share: acceptors with a donor on another rank (the "
              "couplings' poses kept whole); all remote: every donor on "
              "another rank (the stock log's `remote`); pairs: donor-acceptor "

@@ -1,5 +1,5 @@
 # License
-#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """Table, model and charts of the scaling bench (bench/scaling/run).
 
@@ -14,8 +14,8 @@ and any other counted with -countLevel), the timed runs
 (DIR/<level>/timed/<run>-r<R>/postProcessing/stepTimers) and
 DIR/pingPong.log; fits the model's costs (flapfoam.scaling_model) and writes
 PREFIX.md (tables: structure, traffic, timed against the model, the
-model's step per level, method, ranks and stencil, the goals of issue 11
-part 3) and the charts PREFIX-*.png (flapfoam.scaling_charts).
+model's step per level, method, ranks and stencil, the goals
+at 16-48 ranks) and the charts PREFIX-*.png (flapfoam.scaling_charts).
 """
 
 import argparse

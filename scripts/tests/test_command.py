@@ -1,5 +1,5 @@
 # License
-#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """bin/flapfoam and flapfoam.__main__: the one command of the tools, run
 with a python3 first on the PATH that has no numpy (a cluster module's,

@@ -1,5 +1,5 @@
 # License
-#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """controlPlot's metrics of a controlled quantity's error, on made-up
 errors whose answers are known by hand."""

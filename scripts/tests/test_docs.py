@@ -1,5 +1,5 @@
 # License
-#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """The project's markdown: every relative link leads to a file or folder
 of the tree (a renamed or moved file shows here, not to a reader)."""

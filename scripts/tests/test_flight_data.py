@@ -1,5 +1,5 @@
 # License
-#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """flapfoam.flight_data: the checks of a run's file and the comparison of
 two runs, on small files made here."""

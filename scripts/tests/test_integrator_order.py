@@ -1,5 +1,5 @@
 # License
-#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """flapfoam.integrator_order: the systems' references and the verdicts
 (the runs themselves: applications/test/integratorOrder/Alltest)."""

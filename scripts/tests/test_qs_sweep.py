@@ -1,5 +1,5 @@
 # License
-#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """The quasi-steady sweep's results of one point (flapfoam.qs_sweep), on a
 made-up joints.dat whose answers are known by hand."""

@@ -1,5 +1,5 @@
 # License
-#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """The Alltest scripts' result checks (flapfoam.result_checks) on small
 files made here: each passes what it should and fails a perturbed copy."""

@@ -1,5 +1,5 @@
 # License
-#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """The scaling bench's Python pieces on inputs whose answers are known:
 flapfoam.rank_tables (a couplingReport and an oversetRankReport table with

@@ -23,7 +23,7 @@ Description
     Tests of wingAerodynamicsModels::quasiSteady through bodyLoads::
     aerodynamics, on a mesh-free model: a wing on a stroke joint (Rz) and a
     pitch joint (Ry about the span), the root off the stroke axis.  Each
-    strip's force is written out here from the definition (issue 13) and
+    strip's force is written out here from the definition and
     summed apart from the library; zero relative velocity gives zero force;
     a wing moving along its chord feels only CD0; the aerodynamic power of a
     wing in still air is never positive; the load converges in nStrips; bad

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # License
-#     This file is part of flapFoam, derived from OpenFOAM: free software
+#     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """Double pendulum figures (as in Poletti et al., section 4): the angles and
 the drive torque from the eABA (each integrator) against the Lagrangian
