@@ -25,7 +25,7 @@ License
 #include "addToRunTimeSelectionTable.H"
 #include "functionObjectKeys.H"
 #include "rigidFit.H"
-#include "points0MotionSolver.H"
+#include "referencePoints.H"
 #include "cellCellStencilObject.H"
 #include "fvcGrad.H"
 #include "volFields.H"
@@ -64,16 +64,7 @@ void Foam::functionObjects::levStatistics::readZone()
     }
     points_ = isZonePoint.sortedToc();
 
-    // The reference points of the motion solvers (the same at any time)
-    const pointIOField points0(points0MotionSolver::points0IO(mesh_));
-    if (points0.size() != mesh_.nPoints())
-    {
-        FatalErrorInFunction
-            << type() << " " << name() << ": the reference points "
-            << points0.objectPath() << " hold " << points0.size()
-            << " points, the mesh " << mesh_.nPoints() << exit(FatalError);
-    }
-    points0_ = pointField(points0, points_);
+    points0_ = referencePoints(mesh_, points_, type() + " " + name());
 }
 
 

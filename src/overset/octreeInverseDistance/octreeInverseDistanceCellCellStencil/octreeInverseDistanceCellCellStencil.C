@@ -26,7 +26,7 @@ License
 #include "oversetFvPatch.H"
 #include "oversetFvPatchField.H"
 #include "globalIndex.H"
-#include "points0MotionSolver.H"
+#include "referencePoints.H"
 #include "mapDistribute.H"
 #include "stepTimers.H"
 #include "Time.H"
@@ -178,23 +178,17 @@ void Foam::cellCellStencils::octreeInverseDistance::readFollowPoints0
     const label zonei
 )
 {
-    // The motion solvers' reference points (points0, or the mesh's points
-    // in constant/polyMesh): the same whatever the restart time
-    const pointIOField points0(points0MotionSolver::points0IO(mesh_));
-    if (points0.size() != mesh_.nPoints())
-    {
-        FatalErrorInFunction
-            << "searchBoxFollows " << zonei << ": the reference points "
-            << points0.objectPath() << " hold " << points0.size()
-            << " points, the mesh " << mesh_.nPoints()
-            << exit(FatalError);
-    }
-    followPoints0_ = pointField(points0, zoneParts_[zonei].pointMap());
+    followPoints0_ = referencePoints
+    (
+        mesh_,
+        zoneParts_[zonei].pointMap(),
+        "searchBoxFollows " + Foam::name(zonei)
+    );
     followMin0_ = boundBox(followPoints0_, true).min();
 
     Info<< type() << " : searchBox " << settings_.searchBox()
-        << " (at the reference points " << points0.objectPath().name()
-        << ") follows the translation of zone " << zonei << endl;
+        << " (at the reference points) follows the translation of zone "
+        << zonei << endl;
 }
 
 
