@@ -22,6 +22,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "oversetGraphSettings.H"
+#include "dictionaryRead.H"
 #include "oversetCouplings.H"
 #include "dictionaryKeys.H"
 
@@ -43,25 +44,6 @@ const Foam::wordList Foam::oversetGraphSettings::keys
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-Foam::scalar Foam::oversetGraphSettings::readInRange
-(
-    const dictionary& dict,
-    const word& key,
-    const scalar deflt,
-    const scalarMinMax& range
-)
-{
-    const scalar value = dict.getOrDefault<scalar>(key, deflt);
-    if (!range.contains(value))
-    {
-        FatalIOErrorInFunction(dict)
-            << key << " " << value << ": a value in [" << range.min()
-            << ", " << range.max() << "] is allowed" << exit(FatalIOError);
-    }
-    return value;
-}
-
 
 void Foam::oversetGraphSettings::checkPoseGroups
 (
@@ -106,7 +88,10 @@ Foam::oversetGraphSettings::oversetGraphSettings
     ),
     couplingWeight_
     (
-        readInRange(coeffs, "couplingWeight", 1, scalarMinMax(0, 1000))
+        readAllowed
+        (
+            coeffs, "couplingWeight", 1.0, allowed::closed(0.0, 1000.0)
+        )
     ),
     pose_(coeffs.getOrDefault<label>("pose", -1)),
     library_
@@ -115,22 +100,28 @@ Foam::oversetGraphSettings::oversetGraphSettings
     ),
     imbalance_
     (
-        readInRange(coeffs, "imbalance", 0.02, scalarMinMax(1e-3, 1))
+        readAllowed(coeffs, "imbalance", 0.02, allowed::closed(1e-3, 1.0))
     ),
     oversetImbalance_
     (
-        readInRange
+        readAllowed
         (
-            coeffs, "oversetImbalance", 0.1, scalarMinMax(1e-3, 10)
+            coeffs, "oversetImbalance", 0.1, allowed::closed(1e-3, 10.0)
         )
     ),
     oversetWork_
     (
-        readInRange(coeffs, "oversetWork", 1, scalarMinMax(0, 1000))
+        readAllowed
+        (
+            coeffs, "oversetWork", 1.0, allowed::closed(0.0, 1000.0)
+        )
     ),
     poseGroups_
     (
-        label(readInRange(coeffs, "poseGroups", -1, scalarMinMax(-1, 1000)))
+        label
+        (
+            readAllowed(coeffs, "poseGroups", -1.0, allowed::closed(-1.0, 1e3))
+        )
     )
 {
     dictionaryKeys(keys).named(name).check(coeffs);

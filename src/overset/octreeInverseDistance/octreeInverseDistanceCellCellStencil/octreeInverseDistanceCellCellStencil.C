@@ -89,23 +89,6 @@ Foam::label Foam::cellCellStencils::octreeInverseDistance::countZones
 }
 
 
-bool Foam::cellCellStencils::octreeInverseDistance::cuts
-(
-    const label cutter,
-    const label zone
-) const
-{
-    for (const labelPair& p : settings_.noHoleCut())
-    {
-        if (p.first() == zone && p.second() == cutter)
-        {
-            return false;
-        }
-    }
-    return true;
-}
-
-
 bool Foam::cellCellStencils::octreeInverseDistance::cacheStale() const
 {
     return returnReduce

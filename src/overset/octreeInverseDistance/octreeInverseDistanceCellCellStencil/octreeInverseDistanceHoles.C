@@ -32,6 +32,23 @@ Description
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+bool Foam::cellCellStencils::octreeInverseDistance::cuts
+(
+    const label cutter,
+    const label zone
+) const
+{
+    for (const labelPair& p : settings_.noHoleCut())
+    {
+        if (p.first() == zone && p.second() == cutter)
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+
 bool Foam::cellCellStencils::octreeInverseDistance::voxelsCurrent
 (
     const label zonei,

@@ -22,6 +22,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "octreeStencilSettings.H"
+#include "dictionaryRead.H"
 #include "Pstream.H"
 #include "dictionaryKeys.H"
 
@@ -58,61 +59,16 @@ Foam::octreeStencilSettings::allowedKeys
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-template<class EnumType>
-EnumType Foam::octreeStencilSettings::readChoice
-(
-    const dictionary& dict,
-    const word& key,
-    const Enum<EnumType>& names,
-    const EnumType deflt
-)
-{
-    const word name(dict.getOrDefault<word>(key, names[deflt]));
-    if (!names.found(name))
-    {
-        FatalIOErrorInFunction(dict)
-            << key << " " << name << " unknown: must be one of "
-            << names.sortedToc() << exit(FatalIOError);
-    }
-    return names[name];
-}
-
-
 void Foam::octreeStencilSettings::readNumbers(const dictionary& dict)
 {
-    maxWalk_ = dict.getOrDefault<label>("maxWalk", 16);
-    if (maxWalk_ < 0)
-    {
-        FatalIOErrorInFunction(dict)
-            << "maxWalk " << maxWalk_ << " out of range: must be >= 0"
-            << exit(FatalIOError);
-    }
-
-    rigidTolerance_ = dict.getOrDefault<scalar>("rigidTolerance", 1e-6);
-    if (rigidTolerance_ <= 0 || rigidTolerance_ >= 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "rigidTolerance " << rigidTolerance_
-            << " out of range: must be in (0, 1)" << exit(FatalIOError);
-    }
-
-    layerRelax_ = dict.getOrDefault<scalar>("layerRelax", 1);
-    if (layerRelax_ < 0 || layerRelax_ > 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "layerRelax " << layerRelax_
-            << " out of range: must be in [0, 1]" << exit(FatalIOError);
-    }
-
-    tolerance_ = dict.getOrDefault<scalar>("tolerance", 1e-10);
-    if (tolerance_ <= 0 || tolerance_ >= 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "tolerance " << tolerance_
-            << " out of range: must be in (0, 1)" << exit(FatalIOError);
-    }
-
-
+    maxWalk_ =
+        readAllowed<label>(dict, "maxWalk", 16, allowed::atLeast<label>(0));
+    rigidTolerance_ =
+        readAllowed(dict, "rigidTolerance", 1e-6, allowed::open(0.0, 1.0));
+    layerRelax_ =
+        readAllowed(dict, "layerRelax", 1.0, allowed::closed(0.0, 1.0));
+    tolerance_ =
+        readAllowed(dict, "tolerance", 1e-10, allowed::open(0.0, 1.0));
     log_ = dict.getOrDefault<bool>("log", false);
 }
 
