@@ -224,6 +224,27 @@ def plot_pitch(run, others, out):
     save(fig, out, "bodyPitch.png")
 
 
+def lift_peaks(run, cycles, window=0.01):
+    """{cycle: [peak C_zI of its first half, of its second half]} of the
+    wing, C_zI averaged over window of a cycle (a moving mean over the
+    steps: the tiny mesh's forces are noisy), at the times of the flow
+    (the row of t_k holds the load of t_{k-1}); the cycles the run covers
+    whole."""
+    tf = run.t[:-1]*run.f
+    cz = run.c_wing[1:, 1]
+    peaks = {}
+    for n in cycles:
+        inside = (tf >= n - 1) & (tf <= n)
+        if not inside.any() or tf[-1] < n - 1e-9:
+            continue
+        phase, c = tf[inside] - (n - 1), cz[inside]
+        mean = np.array([c[np.abs(phase - p) <= window/2].mean()
+                         for p in phase])
+        peaks[n] = [round(float(mean[half].max()), 3) for half in
+                    (phase < 0.5, phase >= 0.5)]
+    return peaks
+
+
 def plot_lift_cycles(run, cycles, out):
     """The wing's C_zI over each cycle of cycles that the run covers."""
     fig, ax = plt.subplots(figsize=(8, 4.5))
@@ -295,6 +316,7 @@ def summarise(inputs):
     if inputs.qs:
         s["max_abs_dx_m"], s["max_abs_dz_m"] = max_gaps(run, others[-1][1])
     plot_trajectory(run, others, inputs.out)
+    s["lift_peaks_CzI"] = lift_peaks(run, PAPER["lift_cycles"])
     plot_lift_cycles(run, PAPER["lift_cycles"], inputs.out)
     plot_lev(lev, run.f, inputs.out)
     s["flight_data_thinning"] = thin_copy(

@@ -82,3 +82,18 @@ def test_thinned_copy_keeps_the_last_row_and_says_so(tmp_path):
         assert f.attrs["level"] == "tiny"
         assert f.attrs["thinning"] == "every 11-th row of 1001 (and the last)"
     assert ascent.thin_copy(str(src), str(dst), 1e9) == 1
+
+
+def test_lift_peaks_of_each_half_of_the_whole_cycles():
+    f = 20.0
+    t = np.linspace(0, 2.5/f, 2501)         # 2.5 cycles, 1000 rows a cycle
+    phase = (t*f) % 1
+    cz = np.where(phase < 0.5, 3.0, 2.0)*np.sin(2*np.pi*phase)**2
+    # the row of t_k holds the load of t_{k-1}
+    c = np.zeros((len(t), 3))
+    c[1:, 1] = cz[:-1]
+    run = ascent.Flight(t, np.zeros((len(t), 3)), c, f, {})
+    peaks = ascent.lift_peaks(run, [1, 2, 3])
+    assert sorted(peaks) == [1, 2]            # cycle 3 is not whole
+    for n in (1, 2):
+        assert peaks[n] == pytest.approx([3.0, 2.0], abs=2e-3)
