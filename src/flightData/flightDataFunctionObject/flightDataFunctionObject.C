@@ -21,6 +21,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "flightDataFunctionObject.H"
+#include "flapFoamCommit.H"
 #include "fvMesh.H"
 #include "functionObjectKeys.H"
 #include "dictionaryKeys.H"
@@ -81,24 +82,6 @@ string attributeValue(const dictionary& dict, const word& key)
     return os.str();
 }
 
-
-//- The output of a shell command's first line ("" on failure)
-string firstLine(const std::string& command)
-{
-    string line;
-    FILE* pipe = ::popen(command.c_str(), "r");
-    if (pipe)
-    {
-        char buf[256];
-        if (::fgets(buf, sizeof(buf), pipe))
-        {
-            line = buf;
-            line.replaceAll("\n", "");
-        }
-        ::pclose(pipe);
-    }
-    return line;
-}
 
 } // End anonymous namespace
 
@@ -234,24 +217,8 @@ Foam::functionObjects::flightData::attributes(const scalar startTime) const
     }
     a.append(Tuple2<word, string>("decomposition", decomposition));
 
-    // The commit: git on the master only (only it writes the file)
-    const fileName projectDir(getEnv("FLAPFOAM_PROJECT_DIR"));
-    string commit
-    (
-        Pstream::master() && projectDir.size()
-      ? firstLine
-        (
-            "git -C '" + projectDir + "' rev-parse HEAD 2>/dev/null"
-        )
-      : string()
-    );
-    a.append
-    (
-        Tuple2<word, string>
-        (
-            "commit", commit.size() ? commit : string("unknown")
-        )
-    );
+    // The commit the libraries were built from (Allwmake's stamp)
+    a.append(Tuple2<word, string>("commit", string(FLAPFOAM_COMMIT)));
 
     a.append(Tuple2<word, string>("level", "unknown"));
     for (const Tuple2<word, string>& e : extraAttributes_)
