@@ -50,6 +50,7 @@ import numpy as np
 from flapfoam import flight_data
 from flapfoam.plotting import cycle_axes, plt, save
 from flapfoam.tables import joined_table
+from flapfoam.errors import run_tool
 
 PAPER = {
     "core_hours_per_cycle_per_million_cells": 96.0,
@@ -347,4 +348,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    main()
+    run_tool(main)

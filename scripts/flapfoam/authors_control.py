@@ -51,6 +51,7 @@ import math
 import sys
 
 from flapfoam.foam_dict import read_foam_dict
+from flapfoam.errors import FlapFoamError, run_tool
 
 TYPES = ("midStartControl_xzth_PD", "midStartControl_xzth_linearPD")
 LIMITS = {"amplitude": ("Aphi_min", "Aphi_max"),
@@ -68,7 +69,7 @@ PD_USES = {"amplitude": ("z", "bias"), "beta": ("x",), "offset": ("theta",)}
 
 
 def fail(msg):
-    sys.exit("authorsControl: " + msg)
+    raise FlapFoamError("authorsControl: " + msg)
 
 
 def find_model(d, solver):
@@ -244,4 +245,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    main()
+    run_tool(main)

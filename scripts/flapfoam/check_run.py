@@ -71,6 +71,7 @@ from flapfoam import checks, step_timers
 from flapfoam.foam_dict import multibody_coeffs, read_foam_dict, read_state
 from flapfoam.tables import joined_table, start_folders, time_folders
 from flapfoam.wang import imposed_joints
+from flapfoam.errors import FlapFoamError, run_tool
 
 
 # --------------------------------------------------------------------------
@@ -93,7 +94,7 @@ def joints(case, name="eABAMeshMotion"):
     """(columns, rows) of joints.dat joined over the start folders."""
     base = os.path.join(case, "postProcessing", name)
     if not start_folders(base):
-        sys.exit("checkRun: no %s/<time>/joints.dat" % base)
+        raise FlapFoamError("checkRun: no %s/<time>/joints.dat" % base)
     return joined_table(base, "joints.dat", keep_earlier_at_start=False)
 
 
@@ -461,4 +462,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_tool(main))

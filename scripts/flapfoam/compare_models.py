@@ -21,12 +21,12 @@ interpolated to the CFD run's times.  numpy, h5py, matplotlib.
 import argparse
 import math
 import os
-import sys
 
 import numpy as np
 
 from flapfoam import flight_data
 from flapfoam.plotting import cycle_axes, plt, save, shade_downstrokes
+from flapfoam.errors import FlapFoamError, run_tool
 
 
 def run(case, body):
@@ -34,12 +34,12 @@ def run(case, body):
     try:
         attrs, d = flight_data.load(case)
     except (OSError, FileNotFoundError) as e:
-        sys.exit("compareModels: %s: %s" % (case, e))
+        raise FlapFoamError("compareModels: %s: %s" % (case, e))
     key = "coefficients/%s" % body
     if key not in d:
-        sys.exit("compareModels: %s: no %s in its flight data (bodies: %s)"
-                 % (case, key, " ".join(sorted(
-                     k.split("/")[1] for k in d if k.startswith("coeff")))))
+        raise FlapFoamError("compareModels: %s: no %s in its flight data (bodies: %s)"
+                            % (case, key, " ".join(sorted(
+                                k.split("/")[1] for k in d if k.startswith("coeff")))))
     return d["time"], d["joints/q"], d["joints/qDot"], d[key], attrs
 
 
@@ -63,8 +63,8 @@ def compare(cfd, qs, period):
     t_c, q_c, _, c_c, _ = cfd
     t_q, q_q, _, c_q, _ = qs
     if t_q[-1] < t_c[-1] - 1e-9:
-        sys.exit("compareModels: the QS run ends at t = %g s, before the"
-                 " CFD run's %g s" % (t_q[-1], t_c[-1]))
+        raise FlapFoamError("compareModels: the QS run ends at t = %g s, before the"
+                            " CFD run's %g s" % (t_q[-1], t_c[-1]))
     rows = []
     within = t_q <= t_c[-1] + 1e-12
     for (k, cx, cz), (_, qx, qz) in zip(
@@ -146,4 +146,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run_tool(main)

@@ -52,6 +52,7 @@ import numpy as np
 from flapfoam import flight_data
 from flapfoam.checks import report
 from flapfoam.foam_dict import read_foam_dict
+from flapfoam.errors import run_tool
 
 # quantity: (dataset of bodies/BODY, display scale, display unit, SI unit,
 # default band [SI])
@@ -398,4 +399,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_tool(main))

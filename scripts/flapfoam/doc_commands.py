@@ -38,7 +38,7 @@ import sys
 import tempfile
 from dataclasses import dataclass, field
 
-from flapfoam.errors import FlapFoamError
+from flapfoam.errors import FlapFoamError, run_tool
 
 MARKER = re.compile(r"^<!--\s*test:\s*(.*?)\s*-->\s*$")
 
@@ -193,4 +193,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_tool(main))

@@ -52,6 +52,7 @@ import numpy as np
 
 from flapfoam.checks import report
 from flapfoam.tables import time_value
+from flapfoam.errors import run_tool
 
 WAIT = 5.0
 
@@ -380,4 +381,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_tool(main))

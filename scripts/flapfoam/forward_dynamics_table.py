@@ -11,6 +11,7 @@ aggregates over interleaved repetitions) as markdown:
 
 import json
 import sys
+from flapfoam.errors import run_tool
 
 UNITS = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}
 
@@ -86,4 +87,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_tool(main))

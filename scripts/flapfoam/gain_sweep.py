@@ -54,6 +54,7 @@ import numpy as np
 
 from flapfoam import control_plot
 from flapfoam.control_plot import ControlPlotError
+from flapfoam.errors import run_tool
 from flapfoam.qs_sweep import (Sweep, SweepError, edges, grid_points, map_pair,
                               parse_grid, write_table)
 
@@ -316,4 +317,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    main()
+    run_tool(main)

@@ -41,6 +41,7 @@ from flapfoam.foam_dict import multibody_coeffs
 from flapfoam.pimple_guard import read_run
 from flapfoam.plot_single_wing import reference_values
 from flapfoam import wing_geometry as geo
+from flapfoam.errors import FlapFoamError, run_tool
 
 SAFETY = 1.25
 QUANTITIES = (("C_zI", "mean C_zI"), ("C_xI", "mean C_xI"),
@@ -216,7 +217,7 @@ def main(argv=None):
             continue
         try:
             levels.append(read_level(case, args.cycles))
-        except (SystemExit, OSError, ValueError, KeyError) as short:
+        except (FlapFoamError, OSError, ValueError, KeyError) as short:
             print("grid_study: level %s left out: %s" % (name, short))
     if not levels:
         return 1
@@ -234,4 +235,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_tool(main))

@@ -49,6 +49,7 @@ from flapfoam.chain_reference import Chain, Harmonic
 from flapfoam.foam_dict import multibody_coeffs, read_state, set_entry
 from flapfoam.quasi_steady import SingleWingDrone
 from flapfoam.tables import read_table
+from flapfoam.errors import run_tool
 
 SOLVERS = ("Newmark", "symplectic", "CrankNicolson")
 NITERS = ("default", "1", "3")
@@ -326,4 +327,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_tool(main))

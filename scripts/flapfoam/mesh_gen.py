@@ -22,6 +22,7 @@ from dataclasses import dataclass
 
 from flapfoam.background_mesh import BACKGROUND, background_block_mesh, topo_set_refine
 from flapfoam.block_mesh import write_case
+from flapfoam.errors import run_tool
 from flapfoam.wing_mesh import (LEVELS, check_block_sides, level_component,
                                swept_envelope, wing_component)
 
@@ -129,4 +130,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_tool(main))

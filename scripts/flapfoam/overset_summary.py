@@ -24,6 +24,7 @@ import time
 import numpy as np
 
 from flapfoam import step_timers
+from flapfoam.errors import run_tool
 
 
 # The stock solver with the paper's settings (-settings): the reference of
@@ -217,4 +218,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run_tool(main)

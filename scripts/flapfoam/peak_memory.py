@@ -18,6 +18,7 @@ import os
 import subprocess
 import sys
 import time
+from flapfoam.errors import run_tool
 
 
 def hwm_kib(pid):
@@ -96,4 +97,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_tool(main))

@@ -48,6 +48,7 @@ from flapfoam import step_timers
 from flapfoam.checks import report
 from flapfoam.foam_dict import multibody_coeffs
 from flapfoam.plot_single_wing import coefficients, reference_values
+from flapfoam.errors import FlapFoamError, run_tool
 
 # The guard's margins
 MEAN_TOL = 0.01         # cycle means, of the larger mean magnitude
@@ -100,8 +101,8 @@ def read_run(case, n_cycles):
     if len(J) > 1 and J[-1, 0] < run.t1 <= 2*J[-1, 0] - J[-2, 0]:
         run.t1 = J[-1, 0]
     if J[-1, 0] < run.t1*(1 - 1e-9):
-        sys.exit("pimpleGuard: %s reached t = %g s, not the end of %g "
-                 "cycle(s), %g s" % (case, J[-1, 0], n_cycles, run.t1))
+        raise FlapFoamError("pimpleGuard: %s reached t = %g s, not the end of %g "
+                            "cycle(s), %g s" % (case, J[-1, 0], n_cycles, run.t1))
     steps = solver_log.steps(case)
     sel = (steps[:, 0] > t0) & (steps[:, 0] <= run.t1*(1 + 1e-9))
     run.steps = int(sel.sum())
@@ -256,4 +257,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_tool(main))

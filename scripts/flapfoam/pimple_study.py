@@ -38,6 +38,7 @@ import numpy as np
 
 from flapfoam import pimple_guard
 from flapfoam import step_timers
+from flapfoam.errors import FlapFoamError, run_tool
 
 RUN = re.compile(r"^(\w+)-np(\d+)-([\w.+]+)$")
 STEPS_RUN = re.compile(r"^(\w+)-np(\d+)-([\w.+]+)-r(\d+)$")
@@ -73,7 +74,7 @@ def read_runs(folder, n_cycles):
             continue
         try:
             cycles = pimple_guard.read_run(path, n_cycles)
-        except (SystemExit, OSError, KeyError, ValueError) as err:
+        except (FlapFoamError, OSError, KeyError, ValueError) as err:
             print("pimpleStudy: %s left out: %s" % (name, err))
             continue
         runs.append(StudyRun(m.group(1), int(m.group(2)), m.group(3),
@@ -240,4 +241,4 @@ def write(lines, out):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_tool(main))

@@ -52,7 +52,6 @@ Uses Debian's python (/usr/bin/python3) with numpy and matplotlib (Agg).
 import argparse
 import math
 import os
-import sys
 from dataclasses import dataclass
 
 import numpy as np
@@ -63,6 +62,7 @@ from flapfoam.foam_dict import multibody_coeffs
 from flapfoam.plotting import path, plt, save, shade_downstrokes, step_timers_chart
 from flapfoam.tables import joined_table, start_folders
 from flapfoam.wang import imposed_joints
+from flapfoam.errors import FlapFoamError
 
 
 @dataclass
@@ -125,6 +125,8 @@ def reference_values(coeffs):
 def read_run(case, dict_path):
     """The run's tables, prescribed joints and reference values; prints
     them."""
+    if not os.path.isfile(dict_path):
+        raise FlapFoamError("plotRun: no %s (-case: a run folder)" % dict_path)
     coeffs = multibody_coeffs(dict_path)
     ref = reference_values(coeffs)
 
@@ -136,8 +138,8 @@ def read_run(case, dict_path):
         print("plotRun: reading %s" % flight_data.find(case))
     else:
         if not start_folders(base):
-            sys.exit("plotRun: no %s/<time>/joints.dat and no flightData.h5"
-                     % base)
+            raise FlapFoamError("plotRun: no %s/<time>/joints.dat and no flightData.h5"
+                                % base)
         jcols, J = joined_table(base, "joints.dat",
                                 keep_earlier_at_start=False)
         bcols, B = joined_table(base, "bodies.dat", keep_earlier_at_start=True)

@@ -38,6 +38,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from flapfoam.step_timers import GROUPS, read_input, summary
+from flapfoam.errors import run_tool
 
 
 @dataclass
@@ -144,5 +145,5 @@ def main(argv=None):
         sys.exit("plotStepTimers: %s" % e)
 
 if __name__ == "__main__":
-    main()
+    run_tool(main)
 

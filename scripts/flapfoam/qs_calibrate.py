@@ -40,7 +40,6 @@ import argparse
 import copy
 import os
 import re
-import sys
 from dataclasses import dataclass
 
 import numpy as np
@@ -48,12 +47,13 @@ import numpy as np
 from flapfoam.flight_data import find
 from flapfoam.foam_dict import multibody_coeffs
 from flapfoam.quasi_steady import Wing, vec
+from flapfoam.errors import FlapFoamError, run_tool
 
 COEFFS = ("CL", "CD0", "CD1")
 
 
 def fail(message):
-    sys.exit("qsCalibrate: " + message)
+    raise FlapFoamError("qsCalibrate: " + message)
 
 
 def wing_entry(path, name):
@@ -319,4 +319,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run_tool(main)

@@ -21,6 +21,7 @@ import os
 from dataclasses import dataclass
 
 from flapfoam.qs_sweep import Model, Sweep
+from flapfoam.errors import run_tool
 
 INTEGRATORS = (("Newmark", 1), ("Newmark", 3), ("symplectic", 1),
                ("symplectic", 3))
@@ -91,4 +92,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run_tool(main)

@@ -61,6 +61,7 @@ from concurrent.futures import ThreadPoolExecutor
 import numpy as np
 
 from flapfoam.foam_dict import read_foam_dict, set_entry
+from flapfoam.errors import run_tool
 
 # name: (imposedMotion waveform or None, key, allowed (lo, hi) open range)
 PARAMETERS = {
@@ -551,4 +552,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    main()
+    run_tool(main)

@@ -32,6 +32,7 @@ from scipy.integrate import solve_ivp
 
 from flapfoam.foam_dict import multibody_coeffs
 from flapfoam.wang import imposed_joints
+from flapfoam.errors import run_tool
 
 
 def vec(tokens):
@@ -166,4 +167,4 @@ def errors(ref, run):
 
 
 if __name__ == "__main__":
-    main()
+    run_tool(main)

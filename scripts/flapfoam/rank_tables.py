@@ -28,6 +28,7 @@ import sys
 import numpy as np
 
 from flapfoam import foam_mesh
+from flapfoam.errors import run_tool
 
 SUMMARIES = ("total", "max", "mean")
 
@@ -174,4 +175,4 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    main(sys.argv[1:])
+    run_tool(main, sys.argv[1:])

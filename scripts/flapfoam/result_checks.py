@@ -56,6 +56,7 @@ import time
 import numpy as np
 
 from flapfoam import flight_data
+from flapfoam.errors import run_tool
 
 SYNTHETIC_WING = {"CL": 1.7, "CD0": 0.25, "CD1": 2.3}
 
@@ -363,4 +364,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_tool(main))

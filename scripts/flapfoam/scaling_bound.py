@@ -28,6 +28,7 @@ import sys
 import numpy as np
 
 from flapfoam import rank_tables
+from flapfoam.errors import run_tool
 
 REPORT = "oversetCouplingsReport"
 
@@ -118,4 +119,4 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    main(sys.argv[1:])
+    run_tool(main, sys.argv[1:])

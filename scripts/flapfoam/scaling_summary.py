@@ -28,6 +28,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from flapfoam.errors import run_tool
 from flapfoam import (mpi_counts, rank_tables, scaling_charts,
                       scaling_model, scaling_report, scaling_validate,
                       step_timers)
@@ -282,4 +283,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run_tool(main)

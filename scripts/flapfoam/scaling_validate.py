@@ -64,6 +64,7 @@ import tempfile
 
 import numpy as np
 
+from flapfoam.errors import run_tool
 from flapfoam import (rank_tables, scaling_model, solver_log, step_timers,
                       timed_rounds)
 
@@ -587,4 +588,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    main()
+    run_tool(main)

@@ -9,9 +9,10 @@ restarts, and the numeric time folders of a case.  numpy only.
 
 import glob
 import os
-import sys
 
 import numpy as np
+
+from flapfoam.errors import FlapFoamError
 
 
 def read_table(path):
@@ -30,7 +31,7 @@ def read_table(path):
                 continue
             rows.append([float(w) for w in words])
     if columns is None:
-        sys.exit("plotRun: %s has no '# time ...' header" % path)
+        raise FlapFoamError("plotRun: %s has no '# time ...' header" % path)
     data = np.array(rows, dtype=float).reshape(-1, len(columns))
     return columns, data
 
@@ -68,8 +69,8 @@ def joined_table(base, file_name, keep_earlier_at_start):
             columns, data = cols, rows
             continue
         if cols != columns:
-            sys.exit("plotRun: %s: columns differ from the first folder"
-                     % path)
+            raise FlapFoamError("plotRun: %s: columns differ from the first folder"
+                                % path)
         eps = 1e-9*max(abs(t0), 1e-300) + 1e-15
         if keep_earlier_at_start and np.any(np.abs(data[:, 0] - t0) <= eps):
             data = np.vstack([data[data[:, 0] <= t0 + eps],

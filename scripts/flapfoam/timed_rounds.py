@@ -26,6 +26,7 @@ import re
 import sys
 
 import numpy as np
+from flapfoam.errors import run_tool
 
 NAME = re.compile(r"^(\w+)-(\w+)-np(\d+)(-renumbered)?(?:-r(\d+))?$")
 PARTS = ("step", "rbd", "overset", "pimple")
@@ -168,4 +169,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_tool(main))

@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from flapfoam import step_timers
+from flapfoam.errors import FlapFoamError
 
 
 def timers_file(folder, rows, columns="time rbd overset pimple total"):
@@ -49,7 +50,7 @@ def test_summary_and_ranks_files_are_not_timers_files(tmp_path):
 
 def test_a_row_that_does_not_fit_its_header_stops(tmp_path):
     path = timers_file(tmp_path / "0", [(1, 0, 0, 1)])
-    with pytest.raises(SystemExit, match="a row of 4 values under a header"
+    with pytest.raises(FlapFoamError, match="a row of 4 values under a header"
                        " of 5 columns"):
         step_timers.read_file(str(path))
 

@@ -7,6 +7,7 @@
 import sys
 
 from flapfoam.plot_body_wing import main
+from flapfoam.errors import run_tool
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_tool(main))
