@@ -9,6 +9,9 @@ says so).  Only the plot modules import matplotlib.
 Modules (PEP 8 names; the tools run as flapfoam <module>, which is
 $FLAPFOAM_PYTHON -m flapfoam <module>; flapfoam -help lists them):
 
+  errors
+    errors            FlapFoamError, the package's one error, and run_tool,
+                      every tool's main guard (the message, exit status 1)
   readers
     foam_dict         OpenFOAM dictionaries, rigidBodyMotionState
     foam_mesh         polyMesh and volScalarField reader
@@ -56,8 +59,10 @@ $FLAPFOAM_PYTHON -m flapfoam <module>; flapfoam -help lists them):
     peak_memory       a command's peak memory, summed over its processes
     qs_integrators    the paper's integrator study on the quasi-steady model
     ascent            a production ascent's results against the paper's
+    doc_commands      the README's and docs' shell blocks run as typed
   plots
-    plotting          matplotlib set-up and the plots the cases share
+    backend           matplotlib's one set-up (pyplot, Agg)
+    plotting          the plots the cases share
     plot_step_timers  the step-timer bar chart
     plot_single_wing  plots of a single-wing drone run
     plot_body_wing    plots of a body-wing drone run

@@ -36,6 +36,7 @@ import sys
 
 import numpy as np
 
+from flapfoam.backend import pyplot
 from flapfoam import flight_data
 from flapfoam.foam_dict import multibody_coeffs
 from flapfoam.pimple_guard import read_run
@@ -181,9 +182,7 @@ def table(levels):
 
 def plot(levels, png):
     """Each quantity against h, with the extrapolated value."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
     fig, axes = plt.subplots(2, 3, figsize=(12, 7))
     h = [lv.h/levels[-1].h for lv in levels]
     for ax, (key, label) in zip(axes.flat, QUANTITIES):

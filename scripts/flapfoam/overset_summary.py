@@ -23,6 +23,7 @@ import time
 
 import numpy as np
 
+from flapfoam.backend import pyplot
 from flapfoam import step_timers
 from flapfoam.errors import run_tool
 
@@ -173,9 +174,7 @@ def pimple_table(rows):
 
 def chart(rows, png):
     """Stacked bars of the medians and the peak memory."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
 
     fig, (ax, axm) = plt.subplots(
         2, 1, figsize=(max(6, 1.1*len(rows)), 7.5), sharex=True,

@@ -37,6 +37,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from flapfoam.backend import pyplot
 from flapfoam.step_timers import GROUPS, read_input, summary
 from flapfoam.errors import run_tool
 
@@ -52,9 +53,7 @@ class Chart:
 
 def plot(labels, means, columns_list, args):
     """The stacked bars of the step's parts (args: a Chart)."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
 
     fig, ax = plt.subplots(figsize=(2.0 + 1.6*len(labels), 4.8))
     x = np.arange(len(labels))

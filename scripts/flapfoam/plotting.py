@@ -2,8 +2,8 @@
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """
-What the plots of the cases share: matplotlib with the Agg backend (only
-plot modules import this one), saving a figure, an x-z path, the axes of a
+What the plots of the cases share: pyplot (flapfoam.backend; only plot
+modules import this one), saving a figure, an x-z path, the axes of a
 plot over the cycles, the shaded downstrokes and the step-timer chart of a
 run (flapfoam.plot_step_timers).
 """
@@ -12,12 +12,11 @@ import os
 
 import numpy as np
 
-import matplotlib
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402,F401  (the plot modules' plt)
+from flapfoam import plot_step_timers
+from flapfoam.backend import pyplot
+from flapfoam.step_timers import read_input
 
-from flapfoam import plot_step_timers  # noqa: E402
-from flapfoam.step_timers import read_input  # noqa: E402
+plt = pyplot()                  # the plot modules' plt
 
 
 def save(fig, out, name):
