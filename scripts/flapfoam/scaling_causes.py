@@ -26,7 +26,7 @@ run's.
 
 import numpy as np
 
-from flapfoam import scaling_model, scaling_validate
+from flapfoam import scaling_model
 
 CAUSES = ("cells", "iterations", "interfaces", "halo bytes")
 TWIN = {"octree": "ID", "ID": "octree"}
@@ -84,7 +84,7 @@ def gaps(runs, cal):
         if not group or a.group not in serial:
             continue
         b = min(group, key=lambda r: r.measured["pimple"])
-        costs = scaling_validate.serial_costs(serial[a.group], cal)
+        costs = scaling_model.serial_costs(serial[a.group], cal)
         row = {"run": a.name, "method": a.method, "reference": b.method,
                "ranks": a.ranks,
                "gap": a.measured["pimple"] - b.measured["pimple"],

@@ -331,3 +331,22 @@ def serial_decomposition(n_cells, work, pairs):
                        "acceptors": 0, "pairs": pairs}],
              "info": {}}
     return Decomposition(table, [0])
+
+
+# The stencils of the timed runs' names
+STENCILS = {"octree": OCTREE, "ID": STOCK}
+
+
+def serial_costs(serial, cal):
+    """The Costs of a level and stencil from its serial run (a
+    scaling_validate Run: machine, decomposition, stencil, measured parts,
+    iterations)."""
+    costs = Costs(serial.machine, (0.0, 0.0, 0.0), None, cal)
+    n = float(serial.decomposition.cells.sum())
+    costs.stencil = STENCILS[serial.stencil]
+    costs.c_cell = serial.measured["pimple"]/n
+    costs.c_work = serial.measured["overset"]/n
+    costs.rbd = serial.measured["rbd"]
+    costs.iterations = serial.iterations
+    costs.s_bytes = 2*serial.iterations  # two sweeps per BiCGStab iteration
+    return costs

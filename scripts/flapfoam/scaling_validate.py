@@ -65,10 +65,9 @@ import tempfile
 import numpy as np
 
 from flapfoam.errors import run_tool
-from flapfoam import (rank_tables, scaling_model, solver_log, step_timers,
-                      timed_rounds)
+from flapfoam import (rank_tables, scaling_causes, scaling_model, solver_log,
+                      step_timers, timed_rounds)
 
-STENCILS = {"octree": scaling_model.OCTREE, "ID": scaling_model.STOCK}
 LEVELS = ("coarse", "medium", "fine")
 PARTS = ("rbd", "overset", "pimple", "pimpleOversetInterpolate",
          "oversetStencilVoxels")
@@ -321,19 +320,6 @@ def read_archives(paths, startup=3, rounds=(), level_names=("coarse",
                           else group)]
 
 
-def serial_costs(serial, cal):
-    """The Costs of a level and stencil from its serial Run."""
-    costs = scaling_model.Costs(serial.machine, (0.0, 0.0, 0.0), None, cal)
-    n = float(serial.decomposition.cells.sum())
-    costs.stencil = STENCILS[serial.stencil]
-    costs.c_cell = serial.measured["pimple"]/n
-    costs.c_work = serial.measured["overset"]/n
-    costs.rbd = serial.measured["rbd"]
-    costs.iterations = serial.iterations
-    costs.s_bytes = 2*serial.iterations  # two sweeps per BiCGStab iteration
-    return costs
-
-
 def model_steps(runs, cal, measured_iterations=False):
     """{run name: the model's step} of every run with a serial run of its
     session, level and stencil among RUNS (ITERATIONS: the run's own
@@ -343,7 +329,7 @@ def model_steps(runs, cal, measured_iterations=False):
     for r in runs:
         if r.group not in serial:
             continue
-        costs = serial_costs(serial[r.group], cal)
+        costs = scaling_model.serial_costs(serial[r.group], cal)
         out[r.name] = scaling_model.predict(
             costs, r.decomposition,
             r.iterations if measured_iterations else None)
@@ -566,7 +552,6 @@ def arguments(argv=None):
 
 
 def main(argv=None):
-    from flapfoam import scaling_causes
     args = arguments(argv)
     runs = read_archives(args.archives, rounds=args.rounds,
                          level_names=args.levels.split())
