@@ -26,9 +26,9 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
-#include "bodyLoadsTests.H"
+#include "boxLoadsCase.H"
 
-using namespace bodyLoadsTest;
+using namespace boxLoadsCase;
 
 // * * * * * * * * * * * * * * * * * Tests * * * * * * * * * * * * * * * * //
 
@@ -40,10 +40,19 @@ TEST(bodyLoad, selectsTypeByKeys)
 
     const auto selected = [&](const std::string& keys)
     {
-        return bodyLoad::New(flow.mesh(), model, modelDict(keys))->type();
+        return bodyLoad::New
+        (
+            flow.mesh(), model, modelDict(keys), "patchLoad"
+        )->type();
     };
 
+    // Without bodyLoad: the caller's default
     EXPECT_EQ(selected(""), "patchLoad");
+    EXPECT_EQ
+    (
+        bodyLoad::New(flow.mesh(), model, modelDict(""), "vacuum")->type(),
+        "vacuum"
+    );
     EXPECT_EQ(selected("bodyLoad patchLoad;"), "patchLoad");
     EXPECT_EQ(selected("bodyLoad vacuum;"), "vacuum");
     EXPECT_EQ(selected("fluidLoad on; bodyLoad vacuum;"), "vacuum");
@@ -62,7 +71,10 @@ TEST(Errors, bodyLoadUnknownTypeListsValidTypes)
     (
         [&]()
         {
-            bodyLoad::New(flow.mesh(), model, modelDict("bodyLoad bogus;"));
+            bodyLoad::New
+            (
+                flow.mesh(), model, modelDict("bodyLoad bogus;"), "patchLoad"
+            );
         },
         {"bogus", "bodyLoad", "patchLoad", "vacuum"}
     );

@@ -31,10 +31,10 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
-#include "bodyLoadsTests.H"
+#include "boxLoadsCase.H"
 #include "Random.H"
 
-using namespace bodyLoadsTest;
+using namespace boxLoadsCase;
 
 namespace
 {
@@ -107,7 +107,10 @@ spatialVector wingLoad
     RBD::rigidBodyModelState state(model);
     state.q() = q;
     state.qDot() = qDot;
-    const autoPtr<bodyLoad> load(bodyLoad::New(time(), model, wingDict));
+    const autoPtr<bodyLoad> load
+    (
+        bodyLoad::New(time(), model, wingDict, "vacuum")
+    );
     Field<spatialVector> fx(model.nBodies(), spatialVector::one);
     load->loads(state, fx);
     EXPECT_TRUE(fx[model.bodyID("arm")] == spatialVector::zero);
@@ -229,7 +232,10 @@ TEST(quasiSteady, powerNeverPositiveInStillAir)
         RBD::rigidBodyModelState state(model);
         state.q() = q;
         state.qDot() = qDot;
-        const autoPtr<bodyLoad> load(bodyLoad::New(time(), model, dict));
+        const autoPtr<bodyLoad> load
+        (
+            bodyLoad::New(time(), model, dict, "vacuum")
+        );
         Field<spatialVector> fx(model.nBodies(), Zero);
         load->loads(state, fx);
 

@@ -26,9 +26,9 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
-#include "bodyLoadsTests.H"
+#include "boxLoadsCase.H"
 
-using namespace bodyLoadsTest;
+using namespace boxLoadsCase;
 
 // * * * * * * * * * * * * * * * * * Tests * * * * * * * * * * * * * * * * //
 

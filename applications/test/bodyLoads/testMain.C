@@ -24,16 +24,15 @@ Application
 
 Description
     GoogleTest unit tests of libflapFoamBodyLoads, one file per class
-    (Test-<class>.C, helpers in bodyLoadsTests.H), on a box mesh whose
-    sides are the bodies' patches:
-      - patchLoad: uniform pressure and the wall shear of a linear velocity
-        against the analytic force and moment (round-off), for a kinematic
-        p (rhoInf) and p in Pa (rho field), with the laminar transport
-        alone and with a laminar turbulence model; bodies without patches
-        get zero; every bad input stops with an error naming it;
+    (Test-<class>.C, the box case in applications/test/include/
+    boxLoadsCase.H):
       - vacuum (bodyLoad vacuum, fluidLoad off): exactly zero;
-      - bodyLoad: the selection by bodyLoad and fluidLoad, an unknown type
-        a FatalIOError listing the valid ones, treeBodyID.
+      - quasiSteady: the blade-element wing against its definition;
+      - bodyLoad: the selection by bodyLoad and fluidLoad (the default the
+        caller's), an unknown type a FatalIOError listing the valid ones,
+        treeBodyID.
+    The flow's load, patchLoad (libflapFoamFlowLoads), has its own program:
+    flapFoamTest-flowLoads.
 
 \*---------------------------------------------------------------------------*/
 

@@ -128,7 +128,7 @@ void warnUnusedAerodynamics(const dictionary& modelDict, const word& type)
         IOWarningInFunction(modelDict)
             << "The aerodynamics block of " << modelDict.name()
             << " is not used: the loads are " << type << " (bodyLoad "
-            << modelDict.getOrDefault<word>("bodyLoad", "patchLoad (absent)")
+            << modelDict.getOrDefault<word>("bodyLoad", "vacuum (absent)")
             << ", fluidLoad "
             << modelDict.getOrDefault<Switch>("fluidLoad", true)
             << "; patchLoad needs the flow).  To fly with the quasi-steady"
@@ -162,8 +162,10 @@ struct appliedLoads
         fx(model.nBodies(), Zero),
         eachEstimate(false)
     {
+        // The loads without a flow: none (vacuum) by default, and for a
+        // dictionary written for the CFD (patchLoad: the flow's load)
         const bool fluid = modelDict.getOrDefault<Switch>("fluidLoad", true);
-        word type(modelDict.getOrDefault<word>("bodyLoad", "patchLoad"));
+        word type(modelDict.getOrDefault<word>("bodyLoad", "vacuum"));
         if (!fluid || type == "patchLoad")
         {
             type = "vacuum";
@@ -183,7 +185,7 @@ struct appliedLoads
         dictionary dict(modelDict);
         dict.set("bodyLoad", type);
         dict.set("fluidLoad", true);
-        load = bodyLoad::New(runTime, model, dict);
+        load = bodyLoad::New(runTime, model, dict, "vacuum");
         const bool staggered = args.found("staggeredLoads");
         eachEstimate = load->stateDependent() && !staggered;
         Info<< "Loads: " << type

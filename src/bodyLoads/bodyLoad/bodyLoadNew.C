@@ -29,14 +29,15 @@ Foam::autoPtr<Foam::bodyLoad> Foam::bodyLoad::New
 (
     const objectRegistry& db,
     const RBD::rigidBodyModel& model,
-    const dictionary& dict
+    const dictionary& dict,
+    const word& defaultType
 )
 {
     // fluidLoad off: the bodies in vacuum, whatever the type
     const word loadType
     (
         dict.getOrDefault<Switch>("fluidLoad", true)
-      ? dict.getOrDefault<word>("bodyLoad", "patchLoad")
+      ? dict.getOrDefault<word>("bodyLoad", defaultType)
       : word("vacuum")
     );
 

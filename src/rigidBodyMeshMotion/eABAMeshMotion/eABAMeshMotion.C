@@ -291,7 +291,7 @@ Foam::eABAMeshMotion::eABAMeshMotion
     RBD::eABAMotion::checkKeys(coeffDict(), meshKeys());
     readBodies();
     readBackground();
-    load_ = bodyLoad::New(mesh, model_, coeffDict());
+    load_ = bodyLoad::New(mesh, model_, coeffDict(), "patchLoad");
 
     // The model, its bodies and their loads for the output.  The model
     // made a fresh start consistent (eABAMotion: the flow's load at the

@@ -20,7 +20,7 @@ License
     along with flapFoam (COPYING).  If not, see <http://www.gnu.org/licenses/>.
 
 Description
-    Tests of bodyLoads::patchLoad on the box (bodyLoadsTests.H): plate
+    Tests of bodyLoads::patchLoad on the box (boxLoadsCase.H): plate
     carries the sides xMax and yMin, lid zMax, arm and root nothing.
       - uniform kinematic p0, U = 0: F = rhoInf p0 sum(Sf), M = c ^ F;
       - U = G & x (p = 0): the wall shear F = -rhoInf nu (G & Sf), with the
@@ -31,9 +31,9 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
-#include "bodyLoadsTests.H"
+#include "boxLoadsCase.H"
 
-using namespace bodyLoadsTest;
+using namespace boxLoadsCase;
 
 // * * * * * * * * * * * * * * * * Helpers * * * * * * * * * * * * * * * * //
 
@@ -180,7 +180,7 @@ TEST(Errors, patchLoadBodyNotInTree)
     const dictionary dict(modelDict("bodies { ghost { patches (xMin); } }"));
     expectIOError
     (
-        [&](){ bodyLoad::New(flow.mesh(), model, dict); },
+        [&](){ bodyLoad::New(flow.mesh(), model, dict, "patchLoad"); },
         {"ghost", "not a body of the tree"}
     );
 }
