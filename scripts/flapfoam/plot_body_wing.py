@@ -153,12 +153,11 @@ def main():
     ap.add_argument("-o", dest="output", default=None)
     a = ap.parse_args()
     out = a.output or os.path.join(a.case, "plots")
-    os.makedirs(out, exist_ok=True)
-
     if flight_data.find(a.case) is None:
         sys.exit("plotRun: no postProcessing/flightData/*/flightData.h5 in %s"
                  % a.case)
     r = read_run(a.case)
+    os.makedirs(out, exist_ok=True)         # after the run is found
     c = trajectory(r, out)
     body_pitch(r, out)
     coefficients(r, out)

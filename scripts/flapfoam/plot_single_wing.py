@@ -299,9 +299,9 @@ def main():
 
     case = args.case
     out = args.output or os.path.join(case, "plots")
-    os.makedirs(out, exist_ok=True)
     r = read_run(case, args.dict or os.path.join(case, "constant",
                                                 "dynamicMeshDict"))
+    os.makedirs(out, exist_ok=True)         # after the run is found
     trajectory(r, out)
     force_coefficients(r, out)
     prescribed_joints(r, out)
