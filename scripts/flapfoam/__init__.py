@@ -21,6 +21,7 @@ $FLAPFOAM_PYTHON -m flapfoam <module>; flapfoam -help lists them):
     step_timers       stepTimers.dat: read, join, summarise
     solver_log        the per-step numbers of the solver's log
     mpi_counts        MPI counts per rank (libflapFoamMPICounters.so)
+    mpi_counts_checks the mpiCounters Alltest's checks of those counts
   references and models
     wang              Wang kinematics of imposedMotion entries
     quasi_steady      the quasi-steady blade-element wing's reference

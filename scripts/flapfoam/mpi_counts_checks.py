@@ -2,26 +2,30 @@
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """
-Checks of the counts files of libflapFoamMPICounters.so for Alltest, one
-PASS/FAIL line each; exit status non-zero if one fails.
+Checks of the counts files of libflapFoamMPICounters.so for the
+mpiCounters Alltest, one PASS/FAIL line each; exit status non-zero if one
+fails (unit-tested: scripts/tests/test_mpi_counts_checks.py).
 
-    checkCounts.py probe DIR          the probe's counts, exactly
-    checkCounts.py nonZero DIR NAME   both ranks sent point-to-point bytes and
-                                      called collectives
-    checkCounts.py steps FACES DESTS DIR:N DIR:N [DIR:N ...]
-                                      the same traffic in every step: per-step
-                                      counts (difference of the runs of N
-                                      steps) equal between consecutive pairs
-                                      of runs and between the ranks, whole,
-                                      DESTS ranks sent to, and point-to-point
-                                      bytes a multiple of FACES doubles (the
-                                      processor faces of a rank)
+    flapfoam mpi_counts_checks probe DIR
+                        the probe's counts (flapFoamMPICountersProbe),
+                        exactly
+    flapfoam mpi_counts_checks nonZero DIR NAME
+                        both ranks sent point-to-point bytes and called
+                        collectives
+    flapfoam mpi_counts_checks steps FACES DESTS DIR:N DIR:N [DIR:N ...]
+                        the same traffic in every step: per-step counts
+                        (difference of the runs of N steps) equal between
+                        consecutive pairs of runs and between the ranks,
+                        whole, DESTS ranks sent to, and point-to-point bytes
+                        a multiple of FACES doubles (the processor faces of
+                        a rank)
 """
 
 import sys
 
 from flapfoam import mpi_counts
 from flapfoam.checks import Checks
+from flapfoam.errors import FlapFoamError, run_tool
 
 # What flapFoamMPICountersProbe sends (its header): rank -> function ->
 # (calls, bytes, destinations); every other function has no call
@@ -108,11 +112,11 @@ def main(argv):
         elif argv[:1] == ["steps"] and len(argv) >= 5:
             steps(check, int(argv[1]), int(argv[2]), argv[3:])
         else:
-            sys.exit(__doc__)
+            raise FlapFoamError(__doc__)
     except ValueError as err:
         check(False, "counts: %s" % err)
     return check.finish(None, None)
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    sys.exit(run_tool(main, sys.argv[1:]))

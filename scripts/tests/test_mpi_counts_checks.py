@@ -1,0 +1,87 @@
+# License
+#     This file is part of flapFoam: free software
+#     under the GNU General Public License v3 or later (COPYING).
+"""flapfoam.mpi_counts_checks on counts files written here: the probe's
+as libflapFoamMPICounters.so writes them (passes), one byte off (fails),
+and the per-step traffic of made-up runs."""
+
+import pytest
+
+from flapfoam import mpi_counts_checks as mc
+from flapfoam.errors import FlapFoamError
+
+P2P = ["MPI_Send", "MPI_Bsend", "MPI_Ssend", "MPI_Rsend", "MPI_Isend",
+       "MPI_Ibsend", "MPI_Issend", "MPI_Irsend", "MPI_Sendrecv",
+       "MPI_Sendrecv_replace"]
+COLL = ["MPI_Barrier", "MPI_Bcast", "MPI_Reduce", "MPI_Allreduce",
+        "MPI_Gather", "MPI_Gatherv", "MPI_Scatter", "MPI_Scatterv",
+        "MPI_Allgather", "MPI_Allgatherv", "MPI_Alltoall", "MPI_Alltoallv"]
+
+
+def write_rank(folder, rank, n, functions, to):
+    """A counts file: functions {name: (calls, bytes, destinations)}, to
+    {rank: (calls, bytes)}."""
+    lines = ["# flapFoam MPI counts", "rank %d" % rank, "nRanks %d" % n,
+             "# function kind calls bytes destinations"]
+    for name in P2P + COLL:
+        c, b, d = functions.get(name, (0, 0, 0))
+        kind = "p2p" if name in P2P else "collective"
+        lines.append("%s %s %d %d %s" % (name, kind, c, b,
+                                         d if kind == "p2p" else "-"))
+    lines.append("# to rank calls bytes")
+    lines += ["to %d %d %d" % (r, c, b) for r, (c, b) in to.items()]
+    folder.mkdir(parents=True, exist_ok=True)
+    (folder / ("rank%d" % rank)).write_text("\n".join(lines) + "\n")
+
+
+def probe_files(folder, off=0):
+    for r in (0, 1):
+        functions = {k: (c, b + (off if (r, k) == (0, "MPI_Send") else 0),
+                         d if d is not None else 0)
+                     for k, (c, b, d) in mc.PROBE[r].items()}
+        write_rank(folder, r, 2, functions, mc.PROBE_TO[r])
+
+
+def run(argv, capsys):
+    rc = mc.main(argv)
+    return rc, capsys.readouterr().out.splitlines()
+
+
+def test_the_probe_as_sent_passes_and_a_byte_off_fails(tmp_path, capsys):
+    probe_files(tmp_path / "good")
+    rc, out = run(["probe", str(tmp_path / "good")], capsys)
+    assert rc == 0 and all(line.startswith("PASS") for line in out)
+    assert len(out) == 5
+    probe_files(tmp_path / "bad", off=1)
+    rc, out = run(["probe", str(tmp_path / "bad")], capsys)
+    assert rc == 1
+    assert [line[:4] for line in out] == ["PASS", "FAIL", "PASS", "PASS",
+                                          "PASS"]
+
+
+def halo_run(folder, steps, faces=12):
+    """Two ranks exchanging one halo of faces doubles a step with each
+    other, one allreduce a step."""
+    for r in (0, 1):
+        write_rank(folder, r, 2,
+                   {"MPI_Isend": (steps, 8*faces*steps, 1),
+                    "MPI_Allreduce": (steps, 8*steps, None)},
+                   {1 - r: (steps, 8*faces*steps)})
+
+
+def test_steps_the_same_traffic_every_step(tmp_path, capsys):
+    for n in (2, 4, 6):
+        halo_run(tmp_path / ("n%d" % n), n)
+    runs = ["%s:%d" % (tmp_path / ("n%d" % n), n) for n in (2, 4, 6)]
+    rc, out = run(["steps", "12", "1"] + runs, capsys)
+    assert rc == 0, out
+    # another number of processor faces: the bytes are not whole halos
+    rc, out = run(["steps", "7", "1"] + runs, capsys)
+    assert rc == 1 and out[-1].startswith("FAIL")
+
+
+def test_non_zero_and_bad_usage(tmp_path, capsys):
+    halo_run(tmp_path / "r", 3)
+    assert run(["nonZero", str(tmp_path / "r"), "cube"], capsys)[0] == 0
+    with pytest.raises(FlapFoamError, match="mpi_counts_checks probe DIR"):
+        mc.main(["bogus"])
