@@ -26,6 +26,8 @@ $FLAPFOAM_PYTHON -m flapfoam <module>; flapfoam -help lists them):
     wang              Wang kinematics of imposedMotion entries
     quasi_steady      the quasi-steady blade-element wing's reference
     chain_reference   planar chains by Lagrange's equations (scipy)
+    double_pendulum   the double pendulum case's metrics against its
+                      Lagrangian reference (its Alltest's checks)
     scaling_model     the per-rank model of a step (bench/scaling)
     forward_dynamics_table  bench/forwardDynamics' table
   meshes
@@ -67,6 +69,7 @@ $FLAPFOAM_PYTHON -m flapfoam <module>; flapfoam -help lists them):
     plot_step_timers  the step-timer bar chart
     plot_single_wing  plots of a single-wing drone run
     plot_body_wing    plots of a body-wing drone run
+    plot_double_pendulum  the double pendulum case's figures
     control_plot      the closed-loop flight of controlled runs
 
 The package is found through PYTHONPATH, which etc/bashrc sets once

@@ -1,13 +1,13 @@
-#!/usr/bin/python3
 # License
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """Double pendulum: compare rigidBodySimulate (eABA) with the Lagrangian
 reference (doublePendulumReference) and run the case's checks.
 
-Used by Alltest (``compare.py check``), by plot.py (import) and for the
-README table (``compare.py table``).  Run from anywhere; paths are relative
-to the case directory (the parent of this file's folder) unless given.
+Used by the case's Alltest (``flapfoam double_pendulum check``), by
+flapfoam.plot_double_pendulum (import) and for the README table
+(``flapfoam double_pendulum table``).  Paths are relative to the case
+directory: -case DIR, default the folder it is run in.
 
 Inputs (written by Allrun):
     runs/<integrator>/postProcessing/rigidBodySimulate/0/joints.dat
@@ -32,7 +32,7 @@ Metrics (all maxima over the output rows in the window):
     free energy  max |E - E(0)| / E(0)  (E = 0 at rest hanging down)  [0, 2] s
     free theta   max over both absolute angles |theta - theta_ref|  [0, 0.5] s
 
-Initial state (``compare.py initialState``, runs of scripts/initialStateRuns):
+Initial state (``double_pendulum initialState``, runs of scripts/initialStateRuns):
     atRest theta2     theta2 of runs/atRest-<integrator> (from a hand-written
                       state file with qDdot 0: a fresh start), [0, 1] s
     atRest same       max |row difference| of its joints.dat and that of
@@ -51,7 +51,9 @@ import sys
 import numpy as np
 from scipy.interpolate import CubicHermiteSpline, CubicSpline
 
-CASE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from flapfoam.errors import run_tool
+
+CASE = "."                  # the case folder: where it is run, or -case
 
 INTEGRATORS = ("Newmark", "symplectic", "CrankNicolson")
 
@@ -389,4 +391,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run_tool(main)

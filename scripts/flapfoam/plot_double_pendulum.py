@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 # License
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
@@ -9,17 +8,19 @@ reference, and their differences.
     doublePendulum.png      prescribed drive of joint 1
     doublePendulumFree.png  free pendulum (symplectic) against the reference
 
-Reads the same files as compare.py (run ./Allrun first).
+Reads the same files as flapfoam.double_pendulum, in the case folder it
+is run in (run ./Allrun first).
 """
 
 import os
 
-import matplotlib
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
 import numpy as np
 
-import compare
+from flapfoam import double_pendulum as compare
+from flapfoam.backend import pyplot
+from flapfoam.errors import run_tool
+
+plt = pyplot()
 
 DEG = 180/np.pi
 STYLE = {"Newmark": ("C0", "o"), "symplectic": ("C1", "s"),
@@ -135,4 +136,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run_tool(main)
