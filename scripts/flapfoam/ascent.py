@@ -239,8 +239,11 @@ def lift_peaks(run, cycles, window=0.01):
         if not inside.any() or tf[-1] < n - 1e-9:
             continue
         phase, c = tf[inside] - (n - 1), cz[inside]
-        mean = np.array([c[np.abs(phase - p) <= window/2].mean()
-                         for p in phase])
+        # the mean of the rows within window/2 of each row (phase sorted)
+        total = np.concatenate([[0.0], np.cumsum(c)])
+        lo = np.searchsorted(phase, phase - window/2, side="left")
+        hi = np.searchsorted(phase, phase + window/2, side="right")
+        mean = (total[hi] - total[lo])/(hi - lo)
         peaks[n] = [round(float(mean[half].max()), 3) for half in
                     (phase < 0.5, phase >= 0.5)]
     return peaks
