@@ -250,12 +250,12 @@ result()
     labelled "$label" "$python" "$checkRun" "$@"
 }
 
-# flightData <label> <flapfoam.flight_data arguments...>
+# flightData <label> <flapfoam.io.flight_data arguments...>
 flightData()
 {
     local label="$1"
     shift
-    labelled "$label" "$python" -m flapfoam.flight_data "$@"
+    labelled "$label" "$python" -m flapfoam.io.flight_data "$@"
 }
 
 # quasiSteady <label> <run folder> <rows> <Allrun options...>: Allrun
@@ -280,7 +280,7 @@ quasiSteady()
     fi
     flightData "$label" check "$dir" -uniformStep -rows "$rows" -attr level=none \
         -attr stencil=none -attr model=quasiSteady
-    labelled "$label" "$python" -m flapfoam.result_checks \
+    labelled "$label" "$python" -m flapfoam.checks.result_checks \
         flight-data-joints "$dir"
 }
 

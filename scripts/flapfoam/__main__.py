@@ -12,8 +12,8 @@ Debian's /usr/bin/python3, which has numpy, scipy, h5py and matplotlib), so
 that another python3 first on the PATH (a module's, conda's, pyenv's) does
 not matter; a pip install of the package gets the same command
 ([project.scripts]).  A tool is a module of the package that runs as a
-program (it has a main guard); the list reads the modules' sources, so it
-needs none of their dependencies.
+program (it has a main guard), in one of the package's subpackages; the
+list reads the modules' sources, so it needs none of their dependencies.
 """
 
 import ast
@@ -22,29 +22,54 @@ import runpy
 import sys
 
 
+def tool_prefix(folder):
+    """The TOOL_PREFIX a subpackage's __init__.py sets ("" if none): its
+    tools are named prefix + module (scaling/model.py: scaling_model)."""
+    with open(os.path.join(folder, "__init__.py")) as fh:
+        for node in ast.parse(fh.read()).body:
+            if isinstance(node, ast.Assign) and \
+                    [t.id for t in node.targets] == ["TOOL_PREFIX"]:
+                return node.value.value
+    return ""
+
+
+def first_sentence(source):
+    doc = ast.get_docstring(ast.parse(source)) or ""
+    first = " ".join(doc.split("\n\n")[0].split()).split(". ")[0]
+    return first if len(first) <= 96 else \
+        first[:93].rsplit(" ", 1)[0] + " ..."
+
+
 def tools():
-    """{name: first line of its docstring} of the package's runnable
-    modules."""
+    """{name: (module, first line of its docstring)} of the package's
+    runnable modules, in its subpackages; a name found twice is an error
+    of the package (the unit tests check there is none)."""
     here = os.path.dirname(os.path.abspath(__file__))
     found = {}
-    for name in sorted(os.listdir(here)):
-        if not name.endswith(".py") or name.startswith("_"):
+    for sub in sorted(os.listdir(here)):
+        folder = os.path.join(here, sub)
+        if not os.path.isfile(os.path.join(folder, "__init__.py")):
             continue
-        with open(os.path.join(here, name)) as fh:
-            source = fh.read()
-        if 'if __name__ == "__main__":' not in source:
-            continue
-        doc = ast.get_docstring(ast.parse(source)) or ""
-        first = " ".join(doc.split("\n\n")[0].split()).split(". ")[0]
-        found[name[:-3]] = first if len(first) <= 96 else \
-            first[:93].rsplit(" ", 1)[0] + " ..."
-    return found
+        prefix = tool_prefix(folder)
+        for name in sorted(os.listdir(folder)):
+            if not name.endswith(".py") or name.startswith("_"):
+                continue
+            with open(os.path.join(folder, name)) as fh:
+                source = fh.read()
+            if 'if __name__ == "__main__":' not in source:
+                continue
+            tool = prefix + name[:-3]
+            if tool in found:
+                raise RuntimeError("flapfoam: two tools named " + tool)
+            found[tool] = ("flapfoam.%s.%s" % (sub, name[:-3]),
+                           first_sentence(source))
+    return dict(sorted(found.items()))
 
 
 def usage(out):
     out.write("usage: flapfoam TOOL [options] (flapfoam TOOL -h: the "
               "tool's options)\n\ntools:\n")
-    for name, doc in tools().items():
+    for name, (_, doc) in tools().items():
         out.write("  %-24s %s\n" % (name, doc))
 
 
@@ -54,12 +79,13 @@ def main(argv=None):
         usage(sys.stdout)
         return 0
     name = argv[0]
-    if name not in tools():
+    found = tools()
+    if name not in found:
         sys.stderr.write("flapfoam: no tool '%s' (flapfoam -help lists them)"
                          "\n" % name)
         return 2
     sys.argv = ["flapfoam " + name] + argv[1:]
-    runpy.run_module("flapfoam." + name, run_name="__main__", alter_sys=True)
+    runpy.run_module(found[name][0], run_name="__main__", alter_sys=True)
     return 0
 
 

@@ -1,7 +1,7 @@
 # License
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""flapfoam.ascent: the figures of a production ascent on small data made
+"""flapfoam.studies.ascent: the figures of a production ascent on small data made
 here (cycle ends, the LEV table, the cost, the gaps to a model, the
 wall-clock of the logs, the thinned flight data)."""
 
@@ -9,9 +9,7 @@ import h5py
 import numpy as np
 import pytest
 
-from flapfoam import ascent
-
-
+from flapfoam.studies import ascent
 def test_cycle_ends_are_the_values_at_k_over_f():
     t = np.linspace(0, 0.101, 1000)
     ends = ascent.at_cycle_ends(t, 3*t, 20.0)

@@ -1,14 +1,14 @@
 # License
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""flapfoam.chain_reference: the planar chain against known solutions."""
+"""flapfoam.models.chain_reference: the planar chain against known solutions."""
 
 import math
 
 import numpy as np
 import pytest
 
-from flapfoam.chain_reference import Chain, Harmonic
+from flapfoam.models.chain_reference import Chain, Harmonic
 
 
 def test_double_pendulum_accelerations_match_the_lagrangian_reference():

@@ -8,8 +8,9 @@ conda's, pyenv's)."""
 import os
 import subprocess
 
-from flapfoam import __main__ as command
+import pytest
 
+from flapfoam import __main__ as command
 BIN = os.path.join(os.path.dirname(__file__), "..", "..", "bin", "flapfoam")
 
 
@@ -29,9 +30,24 @@ def broken_python_first(tmp_path):
 def test_tools_are_the_runnable_modules():
     tools = command.tools()
     assert {"flight_data", "ascent", "qs_calibrate"} <= set(tools)
-    assert "plotting" not in tools and "checks" not in tools
-    assert tools["flight_data"] == \
-        "Read and check the flight data (HDF5) of a drone run."
+    assert "plotting" not in tools and "checklist" not in tools
+    assert tools["flight_data"] == (
+        "flapfoam.io.flight_data",
+        "Read and check the flight data (HDF5) of a drone run.")
+    # a subpackage's TOOL_PREFIX names its tools
+    assert tools["scaling_validate"][0] == "flapfoam.scaling.validate"
+    assert tools["plot_step_timers"][0] == "flapfoam.plots.step_timers"
+
+
+def test_two_tools_of_one_name_are_refused(tmp_path, monkeypatch):
+    for sub in ("a", "b"):
+        (tmp_path / sub).mkdir()
+        (tmp_path / sub / "__init__.py").write_text("")
+        (tmp_path / sub / "same.py").write_text(
+            '"""Same."""\nif __name__ == "__main__":\n    pass\n')
+    monkeypatch.setattr(command, "__file__", str(tmp_path / "__main__.py"))
+    with pytest.raises(RuntimeError, match="two tools named same"):
+        command.tools()
 
 
 def test_help_and_a_tool_with_a_python3_without_numpy(tmp_path):

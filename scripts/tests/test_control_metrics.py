@@ -8,7 +8,7 @@ import math
 
 import numpy as np
 
-from flapfoam.control_plot import error_metrics
+from flapfoam.plots.control import error_metrics
 
 
 def test_metrics_of_made_up_errors():

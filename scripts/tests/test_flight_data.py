@@ -1,14 +1,13 @@
 # License
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""flapfoam.flight_data: the checks of a run's file and the comparison of
+"""flapfoam.io.flight_data: the checks of a run's file and the comparison of
 two runs, on small files made here."""
 
 import h5py
 import numpy as np
 
-from flapfoam import flight_data as fd
-
+from flapfoam.io import flight_data as fd
 ATTRS = {"case": "c", "level": "tiny", "stencil": "octree", "nRanks": "1",
          "decomposition": "none", "commit": "abc"}
 

@@ -1,12 +1,10 @@
 # License
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""bench/forwardDynamics' table (flapfoam.forward_dynamics_table) of a
+"""bench/forwardDynamics' table (flapfoam.studies.forward_dynamics_table) of a
 made-up Google Benchmark JSON."""
 
-from flapfoam import forward_dynamics_table as fdt
-
-
+from flapfoam.studies import forward_dynamics_table as fdt
 def bench(name, aggregate, value, unit="ns"):
     return {"run_name": name, "run_type": "aggregate", "repetitions": 10,
             "aggregate_name": aggregate, "real_time": value,

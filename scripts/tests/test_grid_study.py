@@ -1,13 +1,13 @@
 # License
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""flapfoam.grid_study: Celik's Richardson extrapolation and GCI."""
+"""flapfoam.studies.grid_study: Celik's Richardson extrapolation and GCI."""
 
 import math
 
 import pytest
 
-from flapfoam.grid_study import Level, Richardson, richardson, table
+from flapfoam.studies.grid_study import Level, Richardson, richardson, table
 
 
 def synthetic(h, exact=2.0, c=0.5, p=1.6):

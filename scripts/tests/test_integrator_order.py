@@ -1,7 +1,7 @@
 # License
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""flapfoam.integrator_order: the systems' references and the verdicts
+"""flapfoam.studies.integrator_order: the systems' references and the verdicts
 (the runs themselves: applications/test/integratorOrder/Alltest)."""
 
 import math
@@ -9,9 +9,7 @@ import math
 import numpy as np
 import pytest
 
-from flapfoam import integrator_order as io
-
-
+from flapfoam.studies import integrator_order as io
 def combination(errors, system="doublePendulum"):
     return io.Combination(io.SYSTEMS[system], "Newmark", "1", errors)
 

@@ -1,13 +1,13 @@
 # License
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""flapfoam.mpi_counts_checks on counts files written here: the probe's
+"""flapfoam.checks.mpi_counts_checks on counts files written here: the probe's
 as libflapFoamMPICounters.so writes them (passes), one byte off (fails),
 and the per-step traffic of made-up runs."""
 
 import pytest
 
-from flapfoam import mpi_counts_checks as mc
+from flapfoam.checks import mpi_counts_checks as mc
 from flapfoam.errors import FlapFoamError
 
 P2P = ["MPI_Send", "MPI_Bsend", "MPI_Ssend", "MPI_Rsend", "MPI_Isend",

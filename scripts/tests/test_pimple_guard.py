@@ -1,16 +1,14 @@
 # License
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""flapfoam.pimple_guard, the guard that chose the flow defaults: its
+"""flapfoam.checks.pimple_guard, the guard that chose the flow defaults: its
 checks on made-up cycles with known answers (the margins, the smoothing,
 which checks count for the verdict)."""
 
 import numpy as np
 import pytest
 
-from flapfoam import pimple_guard as pg
-
-
+from flapfoam.checks import pimple_guard as pg
 def cycles(cz_scale=1.0, cx_shift=0.0, z_shift=0.0, spike=0.0, cont=1.0,
            n=2001):
     """One cycle of 0.05 s: C_zI = 2 + sin, C_xI = cos (mean 0), z climbs

@@ -1,13 +1,13 @@
 # License
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""The quasi-steady sweep's results of one point (flapfoam.qs_sweep), on a
+"""The quasi-steady sweep's results of one point (flapfoam.studies.qs_sweep), on a
 made-up joints.dat whose answers are known by hand."""
 
 import numpy as np
 import pytest
 
-from flapfoam.qs_sweep import point_results
+from flapfoam.studies.qs_sweep import point_results
 
 
 def test_point_results_of_a_made_up_joints_table():

@@ -9,8 +9,11 @@ import math
 
 import pytest
 
-from flapfoam import foam_dict, solver_log, tables
+from flapfoam.io import foam_dict
 
+from flapfoam.io import solver_log
+
+from flapfoam.io import tables
 HEADER = """/*--------------------------------*- C++ -*---------*\\
   a banner
 \\*---------------------------------------------------*/
@@ -128,7 +131,7 @@ def test_solver_log_step_without_continuity_line_is_nan(tmp_path):
 def test_dictionary_with_macros_and_include_read_as_openfoam(tmp_path):
     # what the solver reads: $macros expanded, #include followed (by
     # OpenFOAM's foamDictionary -expand, at 17 digits)
-    from flapfoam.foam_dict import read_foam_dict
+    from flapfoam.io.foam_dict import read_foam_dict
     (tmp_path / "inc").write_text("extra { a 1; }\n")
     d = tmp_path / "dynamicMeshDict"
     d.write_text("FoamFile { version 2.0; format ascii; class dictionary;"

@@ -1,7 +1,7 @@
 # License
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""The Alltest scripts' result checks (flapfoam.result_checks) on small
+"""The Alltest scripts' result checks (flapfoam.checks.result_checks) on small
 files made here: each passes what it should and fails a perturbed copy."""
 
 import math
@@ -10,9 +10,9 @@ import h5py
 import numpy as np
 import pytest
 
-from flapfoam import integrator_order, result_checks as rc
+from flapfoam.studies import integrator_order
 
-
+from flapfoam.checks import result_checks as rc
 def flight_case(tmp_path, rows=4, joints=2):
     """A run folder: flightData.h5 (time, joints/q, resizable) and the
     joints.dat of the same motion (time, q qDot qDdot of each joint)."""
@@ -194,7 +194,7 @@ class FakeRun:
 
 
 def fake_runs(monkeypatch, **runs):
-    from flapfoam import control_plot
+    from flapfoam.plots import control as control_plot
     FakeRun.runs = runs
     monkeypatch.setattr(control_plot, "Run", FakeRun)
 

@@ -2,22 +2,25 @@
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """The scaling bench's Python pieces on inputs whose answers are known:
-flapfoam.rank_tables (a couplingReport and an oversetRankReport table with
+flapfoam.bench.rank_tables (a couplingReport and an oversetRankReport table with
 their extra lines, cellDist to cellDecomposition, neighbour ranks of a 2x2
-mesh), flapfoam.scaling_model (an exact traffic fit, the step of a 2-rank
+mesh), flapfoam.scaling.model (an exact traffic fit, the step of a 2-rank
 decomposition by hand, octree and stock, the values the busiest rank
 receives per sweep, the step of an oversetRankReport, the shared
-bandwidth) and flapfoam.scaling_validate (the committed model against both
+bandwidth) and flapfoam.scaling.validate (the committed model against both
 16-core sessions of bench/scaling/measured, the second's medians over
-rounds by flapfoam.timed_rounds, its calibration reproduced)."""
+rounds by flapfoam.bench.timed_rounds, its calibration reproduced)."""
 
 import fnmatch
 
 import numpy as np
 import pytest
 
-from flapfoam import rank_tables, scaling_model, scaling_validate
+from flapfoam.bench import rank_tables
 
+from flapfoam.scaling import model as scaling_model
+
+from flapfoam.scaling import validate as scaling_validate
 HEADER = "FoamFile { version 2.0; format ascii; class %s; object %s; }\n"
 REPORT = """x: 2 ranks, 6 cells, 3 poses of "c", decomposition "d"
 x: rank cells weight oversetWork processorFaces acceptors pairs remotePairs
@@ -222,14 +225,14 @@ def runs():
 
 @pytest.fixture(scope="module")
 def rows(runs):
-    from flapfoam import scaling_validate as sv
+    from flapfoam.scaling import validate as sv
     return sv.compare(runs, scaling_model.CALIBRATION)
 
 
 def test_timed_rounds_of_the_committed_log():
-    """flapfoam.timed_rounds on the committed runTimed.log (rounds 1 and
+    """flapfoam.bench.timed_rounds on the committed runTimed.log (rounds 1 and
     2): coarse scotch np16 the median of 0.1524 and 0.1339."""
-    from flapfoam import timed_rounds
+    from flapfoam.bench import timed_rounds
     timed = timed_rounds.read_file(ROUNDS, ["coarse", "medium"])
     got = timed_rounds.medians(timed).get(
         ("coarse", "octree", "scotch", 16, False))
@@ -258,7 +261,7 @@ def early_and_rest(rows):
 def test_validate_errors_of_the_committed_model(rows):
     """Its octree runs within 17 %, stock runs within 17 %, the first
     session's octree runs within 23 % but for EARLY (50 %)."""
-    from flapfoam import scaling_validate as sv
+    from flapfoam.scaling import validate as sv
     early, rest = early_and_rest(rows)
     worst = sv.largest_errors(rest, lambda r: (r["session"], r["stencil"]))
     assert len(rows) == 67 and len(early) == 5
@@ -268,7 +271,7 @@ def test_validate_errors_of_the_committed_model(rows):
 
 
 def test_validate_early_runs(rows):
-    from flapfoam import scaling_validate as sv
+    from flapfoam.scaling import validate as sv
     early, _ = early_and_rest(rows)
     assert sv.largest_errors(early)[None][0] < 0.5
 
@@ -276,13 +279,13 @@ def test_validate_early_runs(rows):
 def test_validate_ranked_pairs(rows):
     """20 of the 26 pairs measured more than 15 % apart ranked as
     measured."""
-    from flapfoam import scaling_validate as sv
+    from flapfoam.scaling import validate as sv
     pairs = sv.ranked_pairs(rows)
     assert len(pairs) == 26 and sum(p[3] for p in pairs) >= 20
 
 
 def test_calibrate_reproduces_the_committed_constants(runs):
-    from flapfoam import scaling_validate as sv
+    from flapfoam.scaling import validate as sv
     cal = sv.calibrate(runs)
     ref = scaling_model.CALIBRATION
     diff = {f: abs(getattr(cal, f)/getattr(ref, f) - 1)

@@ -1,13 +1,13 @@
 # License
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""flapfoam.step_timers: the stepTimers.dat reader, restarts, the pimple
+"""flapfoam.io.step_timers: the stepTimers.dat reader, restarts, the pimple
 split."""
 
 import numpy as np
 import pytest
 
-from flapfoam import step_timers
+from flapfoam.io import step_timers
 from flapfoam.errors import FlapFoamError
 
 
@@ -74,7 +74,8 @@ def test_pimple_split_adds_up():
 
 
 def test_chart_of_a_run_and_of_one_without_steps(tmp_path):
-    from flapfoam import plot_step_timers, plotting
+    from flapfoam.plots import step_timers as plot_step_timers
+    from flapfoam.plots import plotting
     timers = tmp_path / "run" / "postProcessing" / "stepTimers"
     timers_file(timers / "0", [(t, 0.1, 0.2, 1.0, 1.3) for t in range(1, 6)])
     out = tmp_path / "plots"
@@ -90,7 +91,7 @@ def test_chart_of_a_run_and_of_one_without_steps(tmp_path):
 
 
 def test_chart_command_line(tmp_path):
-    from flapfoam import plot_step_timers
+    from flapfoam.plots import step_timers as plot_step_timers
     timers = tmp_path / "run"
     timers_file(timers, [(t, 0.1, 0.2, 1.0, 1.3) for t in range(1, 6)])
     out = tmp_path / "chart.png"
@@ -102,7 +103,7 @@ def test_chart_command_line(tmp_path):
 
 
 def test_summary_is_a_tree_whose_parts_add_up(capsys):
-    from flapfoam.step_timers import summary, tree_rows
+    from flapfoam.io.step_timers import summary, tree_rows
     cols = ["time", "rbd", "overset", "pimple", "total", "oversetMovePoints",
             "oversetStencil", "oversetStencilDonors", "pimpleMomentum",
             "pimpleMomentumSolve", "pimplePressure", "pimplePressureSolve",
@@ -133,7 +134,7 @@ def test_summary_is_a_tree_whose_parts_add_up(capsys):
 
 
 def test_summary_of_a_run_without_flow_has_no_flow_rows(capsys):
-    from flapfoam.step_timers import summary
+    from flapfoam.io.step_timers import summary
     cols = ["time", "rbd", "overset", "pimple", "total"]
     data = np.array([[1e-5, 2e-5, 0.0, 1e-8, 5e-5]]*3)
     summary("qs", cols, data)

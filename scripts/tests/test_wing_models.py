@@ -1,7 +1,7 @@
 # License
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""The quasi-steady reference's blade elements (flapfoam.quasi_steady), the
+"""The quasi-steady reference's blade elements (flapfoam.models.quasi_steady), the
 wing's geometry and the mesh levels (wingGeometry, wingMesh)."""
 
 import math
@@ -9,10 +9,10 @@ import math
 import numpy as np
 import pytest
 
-from flapfoam import wing_geometry as geo
-from flapfoam.background_mesh import BACKGROUND, background_cell_size
-from flapfoam.quasi_steady import Wing
-from flapfoam.wing_mesh import LEVELS
+from flapfoam.models import wing_geometry as geo
+from flapfoam.mesh.background_mesh import BACKGROUND, background_cell_size
+from flapfoam.models.quasi_steady import Wing
+from flapfoam.mesh.wing_mesh import LEVELS
 
 
 def wing(**extra):
@@ -77,7 +77,7 @@ def test_levels_refine_in_order():
 
 
 def test_mesh_components_in_merge_order(tmp_path, capsys):
-    from flapfoam import mesh_gen
+    from flapfoam.mesh import mesh_gen
     summary = tmp_path / "meshGen.json"
     summary.write_text('{"components": [{"name": "wing"}, {"name": "body",'
                        ' "post": ["sphereMesh.py", "-map"]},'

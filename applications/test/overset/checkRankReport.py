@@ -39,8 +39,7 @@ import os
 import re
 import sys
 
-from flapfoam import rank_tables
-
+from flapfoam.bench import rank_tables
 PREFIX = "oversetRankReport"
 STOCK = "inverseDistance"
 ANALYSIS = re.compile(
@@ -49,7 +48,7 @@ ANALYSIS = re.compile(
 
 
 def read_reports(log):
-    """The reports of a log (flapfoam.rank_tables), each a dict: time,
+    """The reports of a log (flapfoam.bench.rank_tables), each a dict: time,
     stencil, ranks, columns, rows (per rank), total, max, mean (counts as
     integers), cellImbalance, remoteShare and analysis (the stock stencil's
     last count line before it, or None)."""

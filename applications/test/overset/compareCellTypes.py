@@ -21,8 +21,8 @@ import sys
 
 import numpy as np
 
-from flapfoam import foam_mesh
-from flapfoam.tables import time_value
+from flapfoam.io import foam_mesh
+from flapfoam.io.tables import time_value
 
 
 def times(case):

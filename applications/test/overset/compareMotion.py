@@ -6,7 +6,7 @@
 Compare the multibody motion of two drone runs (eABAMeshMotion) that
 differ only in the overset stencil: each body's force of bodies.dat and
 the trajectory of joints.dat, rows matched by time (the readers of
-flapfoam.check_run and flapfoam.tables).
+flapfoam.checks.check_run and flapfoam.io.tables).
 
 Usage: compareMotion.py REF CASE [-forceTol 0] [-qTol 0]
                         [-columns q_0,qDot_0,q_1,qDot_1] [-bodies wing]
@@ -27,8 +27,8 @@ import sys
 
 import numpy as np
 
-from flapfoam import check_run
-from flapfoam.tables import joined_table, start_folders
+from flapfoam.checks import check_run
+from flapfoam.io.tables import joined_table, start_folders
 
 
 def bodies(case, name="eABAMeshMotion"):

@@ -4,7 +4,7 @@
 """
 Synthetic flight data of the single-wing drone for the qsCalibrate test:
 the tree flown from rest by the independent quasi-steady reference
-(flapfoam.quasi_steady.SingleWingDrone) with the chosen CL, CD0, CD1, and
+(flapfoam.models.quasi_steady.SingleWingDrone) with the chosen CL, CD0, CD1, and
 its wing's rows as the flightData function object writes them (centre of
 mass position and velocity, from the dictionary's centreOfMass, row-major
 orientation, angular velocity, force; the first row's loads NaN).
@@ -24,8 +24,8 @@ import os
 import h5py
 import numpy as np
 
-from flapfoam.foam_dict import multibody_coeffs
-from flapfoam.quasi_steady import SingleWingDrone, vec
+from flapfoam.io.foam_dict import multibody_coeffs
+from flapfoam.models.quasi_steady import SingleWingDrone, vec
 
 
 def wing_rows(drone, states, centre):

@@ -28,7 +28,7 @@ Description
       iterated to convergence step by step: the same implicit step, reached
       from eABAMotion's predictor or from stock's old state (at a few
       iterations they differ: stock's is then first order, see
-      flapfoam.integrator_order; applications/test/integratorOrder);
+      flapfoam.studies.integrator_order; applications/test/integratorOrder);
     - harmonic imposedMotion (model pendulumAndWing): the prescribed q,
       qDot, qDdot are exact after every step.
 

@@ -10,7 +10,7 @@ meshes that scripts/makeMesh turns into the overset mesh:
 
   <out>/wing/system/blockMeshDict         wing component (cellZone "wing"):
                                           the single-wing drone's
-                                          (flapfoam.wing_mesh), same level
+                                          (flapfoam.mesh.wing_mesh), same level
                                           parameters
   <out>/body/system/blockMeshDict         body component (cellZone "body"):
                                           the cube shell of sphereMesh.py,
@@ -39,8 +39,9 @@ import os
 import sys
 
 import sphereMesh  # this case's body component
-from flapfoam import mesh_gen, wing_mesh
-from flapfoam.block_mesh import FOAM_HEADER, write_case
+from flapfoam.mesh import mesh_gen
+from flapfoam.mesh import wing_mesh
+from flapfoam.mesh.block_mesh import FOAM_HEADER, write_case
 
 # Body pitch the refined region allows for (the stroke plane tilts with it)
 THETA_MAX = math.radians(20)

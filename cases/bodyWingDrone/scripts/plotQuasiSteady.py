@@ -41,9 +41,9 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 CASE = os.path.dirname(HERE)
-from flapfoam import flight_data
-from flapfoam.foam_dict import multibody_coeffs
-from flapfoam.plotting import cycle_axes, plt, save
+from flapfoam.io import flight_data
+from flapfoam.io.foam_dict import multibody_coeffs
+from flapfoam.plots.plotting import cycle_axes, plt, save
 
 # name, case folder, Allrun options, legend label, line style (Tz dashed:
 # its z(t) lies on TzRy's)

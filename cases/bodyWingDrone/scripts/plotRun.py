@@ -2,11 +2,11 @@
 # License
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""Plots of a body-wing drone run: flapfoam.plot_body_wing (usage there)."""
+"""Plots of a body-wing drone run: flapfoam.plots.body_wing (usage there)."""
 
 import sys
 
-from flapfoam.plot_body_wing import main
+from flapfoam.plots.body_wing import main
 from flapfoam.errors import run_tool
 
 if __name__ == "__main__":

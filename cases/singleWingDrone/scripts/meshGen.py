@@ -53,16 +53,16 @@ so that the component's outer boundary always lies in cells of size
 h = 20 cbar/(N0 2^nRef).
 
 The levels, the component's topology and the background are those of
-flapfoam.wing_mesh and flapfoam.background_mesh (shared with the body-wing
+flapfoam.mesh.wing_mesh and flapfoam.mesh.background_mesh (shared with the body-wing
 drone).  Units: metres.  Python: /usr/bin/python3 (numpy).
 """
 
 import sys
 
-from flapfoam import mesh_gen
-from flapfoam import wing_geometry as geo
-from flapfoam.background_mesh import BACKGROUND
-from flapfoam.wing_mesh import COMPONENT, LEVELS
+from flapfoam.mesh import mesh_gen
+from flapfoam.models import wing_geometry as geo
+from flapfoam.mesh.background_mesh import BACKGROUND
+from flapfoam.mesh.wing_mesh import COMPONENT, LEVELS
 
 
 def main(argv=None):

@@ -2,11 +2,11 @@
 # License
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""Plots of a single-wing drone run: flapfoam.plot_single_wing (usage there)."""
+"""Plots of a single-wing drone run: flapfoam.plots.single_wing (usage there)."""
 
 import sys
 
-from flapfoam.plot_single_wing import main
+from flapfoam.plots.single_wing import main
 from flapfoam.errors import run_tool
 
 if __name__ == "__main__":

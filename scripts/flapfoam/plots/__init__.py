@@ -1,0 +1,12 @@
+# License
+#     This file is part of flapFoam: free software
+#     under the GNU General Public License v3 or later (COPYING).
+"""
+Plots (matplotlib, Agg, set up once in backend): the plots the cases share
+(plotting), the step-timer chart (step_timers), single-wing and body-wing
+runs (single_wing, body_wing), the double pendulum (double_pendulum) and the
+closed-loop flight of controlled runs (control).  Its tools are
+flapfoam plot_<module>.
+"""
+
+TOOL_PREFIX = "plot_"

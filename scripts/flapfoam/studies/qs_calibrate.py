@@ -1,0 +1,322 @@
+# License
+#     This file is part of flapFoam: free software
+#     under the GNU General Public License v3 or later (COPYING).
+"""
+Calibrates the quasi-steady wing (bodyLoad aerodynamics, type quasiSteady)
+on a CFD run, as Lee et al. (2016) did on Fluent runs: the coefficients
+CL, CD0, CD1 fitted to the run's fluid force on the wing by linear least
+squares.
+
+    flapfoam qs_calibrate CASE [-dict DICT] [-wing NAME]
+        [-skip N] [-until T] [-components xz|xyz] [-out FILE]
+
+The blade-element force is linear in the coefficients: per strip
+    dF = 0.5 rho |u_perp|^2 c dr (CL sin 2a e_L + (CD0 + CD1 (1 - cos 2a)) e_D)
+so each row of the run's flight data (postProcessing/flightData/<start>/
+flightData.h5: bodies/<body>/orientation, position, velocity,
+angularVelocity of the wing's body, and its fluid force) gives three basis
+forces, those of (CL, CD0, CD1) = (1, 0, 0), (0, 1, 0), (0, 0, 1), from
+the strips' velocities v_k = v_origin + omega x arm (v_origin, that of the
+body frame's origin, from the centre of mass's velocity and the angular
+velocity; the centre of mass from the dictionary's body).  The measured
+force components (x and z, or all three) of every row are fitted by one
+least-squares problem, each row weighted by its time step (the run's
+steps may vary).
+
+DICT (default CASE/constant/dynamicMeshDict) holds the aerodynamics entry
+(NAME: default its only entry); -skip N leaves out the first N steps (the
+start-up transient; the first row, the initial state whose loads are not
+computed, is always left out), -until T the steps after t = T (a fit on the
+first cycles of a longer run, whose later cycles it then predicts).  Prints the fit (coefficients, R^2 and the RMS
+residual relative to the force's range per component, the condition
+number), the mean vertical force of the CFD, of the fitted QS and of the
+QS with Wang's defaults (over the whole flapping cycles of the fitted rows,
+or over all of them when they cover less than a cycle), and the entry to
+paste (the dictionary's entry with the fitted CL, CD0, CD1; -out FILE also
+writes it there).  numpy and h5py.
+"""
+
+import argparse
+import copy
+import os
+import re
+from dataclasses import dataclass
+
+import numpy as np
+
+from flapfoam.io.flight_data import find
+from flapfoam.io.foam_dict import multibody_coeffs
+from flapfoam.models.quasi_steady import Wing, vec
+from flapfoam.errors import FlapFoamError, run_tool
+
+COEFFS = ("CL", "CD0", "CD1")
+
+
+def fail(message):
+    raise FlapFoamError("qsCalibrate: " + message)
+
+
+def wing_entry(path, name):
+    """(name, entry, multibody coefficients) of the dictionary's
+    aerodynamics entry NAME (None: its only one)."""
+    if not os.path.isfile(path):
+        fail("no dictionary %s (give -dict DICT: a dynamicMeshDict with an"
+             " aerodynamics entry)" % path)
+    coeffs = multibody_coeffs(path)
+    aero = coeffs.get("aerodynamics")
+    entries = {k: v for k, v in aero.items() if isinstance(v, dict)} \
+        if isinstance(aero, dict) else {}
+    if not entries:
+        fail("%s: no aerodynamics entry with a wing (e.g. the drone cases'"
+             " constant/dynamicMeshDict.eABA has one: -dict)" % path)
+    if name is None and len(entries) > 1:
+        fail("%s: aerodynamics has %d wings (%s): choose one with -wing"
+             % (path, len(entries), ", ".join(entries)))
+    name = name or next(iter(entries))
+    if name not in entries:
+        fail("%s: -wing %s: no such aerodynamics entry (allowed: %s)"
+             % (path, name, ", ".join(entries)))
+    return name, entries[name], coeffs
+
+
+class FlightRows:
+    """The rows of a run's flight data used in the fit: the wing body's
+    motion (body frame origin) and the fluid force on it."""
+
+    KEYS = ("orientation", "position", "velocity", "angularVelocity",
+            "force")
+
+    def __init__(self, case, body, centre_of_mass, window):
+        path = find(case)
+        if path is None:
+            fail("no postProcessing/flightData/*/flightData.h5 in %s (a CFD"
+                 " run's flight data)" % case)
+        self.path = path
+        try:
+            t, d = self.read(body)
+        except OSError as e:
+            fail("%s: cannot read: %s" % (path, e))
+        self.select(t, d, window)
+        E = d["orientation"][self.rows].reshape(-1, 3, 3)
+        arm = E @ centre_of_mass
+        self.E, self.omega = E, d["angularVelocity"][self.rows]
+        self.origin = d["position"][self.rows] - arm
+        self.v_origin = d["velocity"][self.rows] \
+            - np.cross(self.omega, arm)
+        self.force = d["force"][self.rows]
+        self.time = t[self.rows]
+        self.step = t[self.rows] - t[self.rows - 1]
+
+    def read(self, body):
+        """(time, {key: rows}) of the body's datasets."""
+        import h5py
+        with h5py.File(self.path, "r") as f:
+            missing = ["bodies/%s/%s" % (body, k) for k in self.KEYS
+                       if "bodies/%s/%s" % (body, k) not in f]
+            if missing or "time" not in f:
+                fail("%s: no %s (the motion and fluid force of body %s);"
+                     " its bodies: %s"
+                     % (self.path, ", ".join(missing or ["time"]), body,
+                        ", ".join(f.get("bodies", {}).keys()) or "none"))
+            return f["time"][()], {k: f["bodies/%s/%s" % (body, k)][()]
+                                   for k in self.KEYS}
+
+    def select(self, t, d, window):
+        """self.rows: the rows after the initial state and -skip steps, up
+        to t = -until (window: (skip, until or None)); every value
+        finite."""
+        skip, until = window
+        n = len(t) - 1
+        if skip < 0 or skip > n - 3:
+            fail("%s: -skip %d: allowed 0 to %d (the file has %d steps"
+                 " after its initial state, t = %g to %g s; the fit needs"
+                 " at least 3)" % (self.path, skip, max(n - 3, 0), n,
+                                   t[0], t[-1]))
+        self.rows = np.arange(1 + skip, len(t))
+        if until is not None:
+            self.rows = self.rows[t[self.rows] <= until*(1 + 1e-12)]
+            if len(self.rows) < 3:
+                fail("%s: -until %g: %d steps from the start (t = %g) to it;"
+                     " the fit needs at least 3: a later -until (the file"
+                     " ends at t = %g)" % (self.path, until, len(self.rows),
+                                          t[0], t[-1]))
+        finite = np.all([np.isfinite(d[k][self.rows]).reshape(
+            len(self.rows), -1).all(axis=1) for k in self.KEYS], axis=0)
+        bad = np.flatnonzero(~finite)
+        if len(bad):
+            fail("%s: %d rows with NaN/inf motion or force from t = %g s"
+                 " (allowed: only the initial state)"
+                 % (self.path, len(bad), t[self.rows[bad[0]]]))
+
+
+def basis_forces(wing, rows):
+    """(rows, 3 coefficients, 3 components): the wing's force per unit
+    CL, CD0, CD1 at every row."""
+    unit = copy.copy(wing)
+    basis = np.empty((len(rows.time), 3, 3))
+    for j, coefficient in enumerate(COEFFS):
+        for k in COEFFS:
+            setattr(unit, k, 1.0 if k == coefficient else 0.0)
+        for i in range(len(rows.time)):
+            basis[i, j], _ = unit.force(rows.E[i], rows.origin[i],
+                                        rows.v_origin[i], rows.omega[i])
+    return basis
+
+
+def fit(basis, rows, components):
+    """(coefficients, condition number): least squares over the rows (each
+    weighted by its time step) and the components (indices)."""
+    w = np.sqrt(rows.step)[:, None]
+    A = (basis[:, :, components]*w[:, :, None]).transpose(0, 2, 1) \
+        .reshape(-1, 3)
+    b = (rows.force[:, components]*w).reshape(-1)
+    scale = np.linalg.norm(A, axis=0)
+    if np.any(scale == 0):
+        fail("the wing's motion gives no %s force in the fitted rows:"
+             " nothing to fit (a wing at rest?)"
+             % "/".join(c for c, s in zip(COEFFS, scale) if s == 0))
+    x, _, rank, sv = np.linalg.lstsq(A/scale, b, rcond=None)
+    if rank < 3:
+        fail("CL, CD0, CD1 cannot be told apart over the fitted rows (rank"
+             " %d of 3): fit over more of a cycle (-skip, a longer run)"
+             % rank)
+    return x/scale, sv[0]/sv[-1]
+
+
+def quality(model, rows, components):
+    """Per component: (R^2, RMS residual / range of the force), means
+    weighted by the time steps."""
+    out = []
+    for c in components:
+        F = rows.force[:, c]
+        res = np.average((F - model[:, c])**2, weights=rows.step)
+        spread = np.average((F - np.average(F, weights=rows.step))**2,
+                            weights=rows.step)
+        span = np.ptp(F)
+        out.append((1 - res/spread if spread > 0 else np.nan,
+                    np.sqrt(res)/span if span > 0 else np.nan))
+    return out
+
+
+def cycle_rows(rows, coeffs):
+    """(rows of the whole flapping cycles at the end of the fitted ones,
+    text): all of them when they cover less than one cycle (or no
+    frequency)."""
+    f = [float(e["frequency"][0])
+         for e in coeffs.get("imposedMotion", {}).values()
+         if isinstance(e, dict) and "frequency" in e]
+    span = rows.time[-1] - rows.time[0] + rows.step[0]
+    if not f:
+        return slice(None), "over the fitted rows (no imposedMotion" \
+            " frequency)"
+    period = 1/min(f)
+    cycles = int(np.floor(span/period + 1e-9))
+    if cycles < 1:
+        return slice(None), ("over the fitted rows, %.3g of a cycle of %g s:"
+                             " not a cycle mean" % (span/period, period))
+    keep = rows.time - rows.step >= rows.time[-1] - (cycles + 1e-9)*period
+    return keep, "over the last %d whole cycle(s) of %g s" % (cycles, period)
+
+
+def entry_text(name, entry, values):
+    """The aerodynamics entry NAME with the fitted coefficients."""
+    lines = ["    %s" % name, "    {"]
+    keys = list(entry) + [k for k in COEFFS if k not in entry]
+    for key in keys:
+        if key in COEFFS:
+            text = "%.8g" % values[COEFFS.index(key)]
+        else:
+            text = re.sub(r"\(\s+", "(", " ".join(entry[key]))
+            text = re.sub(r"\s+\)", ")", text)
+        lines.append("        %-11s %s;" % (key, text))
+    lines.append("    }")
+    return "\n".join(lines)
+
+
+@dataclass
+class WingEntry:
+    """The aerodynamics entry fitted: its dictionary file, name, keys and
+    the multibody coefficients around it."""
+    path: str
+    name: str
+    entry: dict
+    coeffs: dict
+
+
+def report(wing, rows, axes):
+    """Fit the wing (a WingEntry) on the rows' force components axes ("xz"
+    or "xyz"), print the report and the entry; returns the entry's
+    text."""
+    entry, coeffs = wing.entry, wing.coeffs
+    components = ["xyz".index(c) for c in axes]
+    basis = basis_forces(Wing(entry), rows)
+    fitted, cond = fit(basis, rows, components)
+    defaults = Wing({k: v for k, v in entry.items() if k not in COEFFS})
+    wang = np.array([defaults.CL, defaults.CD0, defaults.CD1])
+    keep, over = cycle_rows(rows, coeffs)
+
+    def mean_z(F):
+        return np.average(F[keep, 2], weights=rows.step[keep])
+
+    print("qsCalibrate: %s, body %s, %d rows t = %g to %g s, components %s"
+          % (rows.path, entry["body"][0], len(rows.time),
+             rows.time[0], rows.time[-1], " ".join(axes)))
+    print("fitted: CL %.8g CD0 %.8g CD1 %.8g (condition number %.3g)"
+          % (tuple(fitted) + (cond,)))
+    negative = [k for k, x in zip(COEFFS, fitted) if x < 0]
+    if negative:
+        print("note: %s < 0: not a flat plate's coefficients; the rows are"
+              " likely dominated by what the QS model lacks (added mass,"
+              " rotational forces, the start-up): fit over whole cycles"
+              % ", ".join(negative))
+    print("mean F_z %s: run %.6g N" % (over, mean_z(rows.force)))
+    for label, x in (("fitted", fitted), ("Wang's defaults", wang)):
+        model = np.einsum("j,ijk->ik", x, basis)
+        fit_text = "; ".join("%s: R^2 %.6f, RMS residual %.3g of the range"
+                            % (axes[i], r2, rms) for i, (r2, rms)
+                            in enumerate(quality(model, rows, components)))
+        print("QS %s (CL %.4g CD0 %.4g CD1 %.4g): %s; mean F_z %.6g N ="
+              " %.4f of the run's" % (label, *x, fit_text, mean_z(model),
+                                       mean_z(model)/mean_z(rows.force)))
+    text = entry_text(wing.name, entry, fitted)
+    print("The entry to paste (aerodynamics of %s):\n%s" % (wing.path, text))
+    return text
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("case", help="a CFD run with flight data")
+    parser.add_argument("-dict", help="dynamicMeshDict with the aerodynamics"
+                        " entry (default CASE/constant/dynamicMeshDict)")
+    parser.add_argument("-wing", help="the aerodynamics entry (default: its"
+                        " only one)")
+    parser.add_argument("-skip", type=int, default=0,
+                        help="steps left out at the start (default 0)")
+    parser.add_argument("-until", type=float,
+                        help="leave out the steps after this time [s] (e.g."
+                        " 0.1: the first two cycles at 20 Hz)")
+    parser.add_argument("-components", choices=("xz", "xyz"), default="xz")
+    parser.add_argument("-out", help="also write the entry to this file")
+    args = parser.parse_args()
+    args.dict = args.dict or os.path.join(args.case, "constant",
+                                          "dynamicMeshDict")
+    name, entry, coeffs = wing_entry(args.dict, args.wing)
+    body = entry.get("body", ["?"])[0]
+    if body not in coeffs.get("bodies", {}):
+        fail("%s: aerodynamics/%s: body %s is not a body of the tree"
+             " (allowed: %s)" % (args.dict, name, body,
+                                 ", ".join(coeffs.get("bodies", {}))))
+    centre = vec(coeffs["bodies"][body].get("centreOfMass", ["0", "0", "0"]))
+    rows = FlightRows(args.case, body, centre, (args.skip, args.until))
+    text = report(WingEntry(args.dict, name, entry, coeffs), rows,
+                  args.components)
+    if args.out:
+        try:
+            with open(args.out, "w") as f:
+                f.write(text + "\n")
+        except OSError as e:
+            fail("-out %s: cannot write: %s" % (args.out, e))
+
+
+if __name__ == "__main__":
+    run_tool(main)
