@@ -95,3 +95,24 @@ def test_lift_peaks_of_each_half_of_the_whole_cycles():
     assert sorted(peaks) == [1, 2]            # cycle 3 is not whole
     for n in (1, 2):
         assert peaks[n] == pytest.approx([3.0, 2.0], abs=2e-3)
+
+
+def test_wing_coefficients_plot_the_cfd_at_its_flow_times_and_the_qs(
+        monkeypatch):
+    t = np.linspace(0.0, 0.1, 11)
+    c = np.column_stack([np.sin(40*np.pi*t), 2 + np.cos(40*np.pi*t), 0*t])
+    run = ascent.Flight(t, np.zeros((11, 3)), c, 20.0, {})
+    qs = ascent.Flight(t, np.zeros((11, 3)), 2*c, 20.0, {})
+    shown = {}
+    monkeypatch.setattr(ascent, "save",
+                        lambda fig, out, name: shown.update(fig=fig, name=name))
+    ascent.plot_coefficients(run, [("vacuum", qs, "--"), ("QS", qs, ":")],
+                             "unused")
+    assert shown["name"] == "wingCoefficients.png"
+    for ax, i in zip(shown["fig"].axes, (0, 1)):
+        lines = {ln.get_label(): ln for ln in ax.get_lines()
+                 if not ln.get_label().startswith("_")}
+        assert set(lines) == {"CFD", "QS"}       # no vacuum: it has no air
+        np.testing.assert_allclose(lines["CFD"].get_xdata(), t[:-1]*20.0)
+        np.testing.assert_allclose(lines["CFD"].get_ydata(), c[1:, i])
+        np.testing.assert_allclose(lines["QS"].get_ydata(), 2*c[:, i])

@@ -29,6 +29,8 @@ times); -vacuum DIR a run of the same dictionaries without air load
                    runs beside (BW);
   liftCycles.png   the wing's C_zI over cycles 2, 5, 10, 17 (the load of a
                    row plotted at the time of the flow it comes from);
+  wingCoefficients.png  the wing's C_xI and C_zI over the whole run, the QS
+                   run's beside (the paper's figures 10 and 11);
   lev.png          V' and Gamma over the written times, relative to t' =
                    0.75;
   flightData.h5    the run's flight data, every row, or every k-th row so
@@ -42,7 +44,6 @@ import glob
 import json
 import os
 import re
-import sys
 from dataclasses import dataclass
 
 import numpy as np
@@ -50,7 +51,7 @@ import numpy as np
 from flapfoam.io import flight_data
 from flapfoam.plots.plotting import cycle_axes, plt, save
 from flapfoam.io.tables import joined_table
-from flapfoam.errors import run_tool
+from flapfoam.errors import FlapFoamError, run_tool
 
 PAPER = {
     "core_hours_per_cycle_per_million_cells": 96.0,
@@ -265,6 +266,22 @@ def plot_lift_cycles(run, cycles, out):
     save(fig, out, "liftCycles.png")
 
 
+def plot_coefficients(run, others, out):
+    """The wing's C_xI and C_zI against t f, the CFD's (a row's load at the
+    time of the flow it comes from) and the QS run's (its own times)."""
+    fig, axes = plt.subplots(2, 1, figsize=(10, 6), sharex=True)
+    curves = [("CFD", run.t[:-1], run.c_wing[1:])]
+    curves += [(label, flight.t, flight.c_wing)
+               for label, flight, style in others if label == "QS"]
+    for label, t, c in curves:
+        for ax, i in zip(axes, (0, 1)):
+            ax.plot(t*run.f, c[:, i], lw=0.6, label=label)
+    cycle_axes(axes[0], "wing C_xI", "The wing's force coefficients")
+    cycle_axes(axes[1], "wing C_zI", "")
+    axes[0].legend(fontsize=8)
+    save(fig, out, "wingCoefficients.png")
+
+
 def plot_lev(lev, f, out):
     """V' and Gamma over the written times, relative to the first row at
     or after t' = 0.75."""
@@ -322,6 +339,7 @@ def summarise(inputs):
     plot_trajectory(run, others, inputs.out)
     s["lift_peaks_CzI"] = lift_peaks(run, PAPER["lift_cycles"])
     plot_lift_cycles(run, PAPER["lift_cycles"], inputs.out)
+    plot_coefficients(run, others, inputs.out)
     plot_lev(lev, run.f, inputs.out)
     s["flight_data_thinning"] = thin_copy(
         flight_data.find(inputs.run),
@@ -343,7 +361,7 @@ def main(argv=None):
     p.add_argument("-maxMB", dest="max_mb", type=float, default=20.0)
     a = p.parse_args(argv)
     if not os.path.isdir(a.out):
-        sys.exit("ascent: -o %s: no such folder" % a.out)
+        raise FlapFoamError("ascent: -o %s: no such folder" % a.out)
     s = summarise(Inputs(a.run, a.out, a.vacuum, a.qs, a.max_mb))
     for key, value in s.items():
         if key not in ("paper",):
