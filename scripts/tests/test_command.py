@@ -6,6 +6,7 @@ with a python3 first on the PATH that has no numpy (a cluster module's,
 conda's, pyenv's)."""
 
 import os
+import runpy
 import subprocess
 
 import pytest
@@ -70,3 +71,14 @@ def test_unknown_tool_is_refused(tmp_path):
         tmp_path), capture_output=True, text=True)
     assert out.returncode == 2
     assert "no tool 'flight_dat' (flapfoam -help lists them)" in out.stderr
+
+
+# runpy warns that the tool's module was imported before (by its package)
+@pytest.mark.filterwarnings("ignore::RuntimeWarning")
+@pytest.mark.parametrize("tool", sorted(command.tools()))
+def test_every_tool_answers_help(tool, capsys, monkeypatch):
+    monkeypatch.setattr("sys.argv", ["flapfoam " + tool, "-h"])
+    with pytest.raises(SystemExit) as end:
+        runpy.run_module(command.tools()[tool][0], run_name="__main__")
+    out = capsys.readouterr().out
+    assert end.value.code in (0, None) and out.startswith("usage: "), out

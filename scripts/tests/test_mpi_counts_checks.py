@@ -8,7 +8,6 @@ and the per-step traffic of made-up runs."""
 import pytest
 
 from flapfoam.checks import mpi_counts_checks as mc
-from flapfoam.errors import FlapFoamError
 
 P2P = ["MPI_Send", "MPI_Bsend", "MPI_Ssend", "MPI_Rsend", "MPI_Isend",
        "MPI_Ibsend", "MPI_Issend", "MPI_Irsend", "MPI_Sendrecv",
@@ -83,5 +82,10 @@ def test_steps_the_same_traffic_every_step(tmp_path, capsys):
 def test_non_zero_and_bad_usage(tmp_path, capsys):
     halo_run(tmp_path / "r", 3)
     assert run(["nonZero", str(tmp_path / "r"), "cube"], capsys)[0] == 0
-    with pytest.raises(FlapFoamError, match="mpi_counts_checks probe DIR"):
+    with pytest.raises(SystemExit) as end:
         mc.main(["bogus"])
+    assert end.value.code == 2
+    assert "invalid choice: 'bogus'" in capsys.readouterr().err
+    with pytest.raises(SystemExit):
+        mc.main(["steps", "4", "2", "only:1"])
+    assert "at least two DIR:N" in capsys.readouterr().err

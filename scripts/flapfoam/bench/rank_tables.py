@@ -23,7 +23,7 @@ Per-rank tables of a decomposition, for the scaling bench (bench/scaling):
     flapfoam rank_tables -cellOrder POLYMESH DECOMPOSITION...
 """
 
-import sys
+import argparse
 
 import numpy as np
 
@@ -158,21 +158,27 @@ def cell_order_gap(poly_mesh, decomposition):
     return np.bincount(rank, weights=gap, minlength=n)/np.maximum(faces, 1)
 
 
-USAGE = """usage: flapfoam rank_tables -cellDist CELLDIST OUT
-       flapfoam rank_tables -cellOrder POLYMESH DECOMPOSITION..."""
-
-
-def main(argv):
-    if len(argv) == 3 and argv[0] == "-cellDist":
-        cell_decomposition(argv[1], argv[2])
-    elif len(argv) >= 3 and argv[0] == "-cellOrder":
-        for fname in argv[2:]:
-            gap = cell_order_gap(argv[1], read_decomposition(fname))
-            print("%s: mean cell distance of a face, largest rank %.0f, "
-                  "mean over ranks %.0f" % (fname, gap.max(), gap.mean()))
-    else:
-        sys.exit(USAGE)
+def main(argv=None):
+    p = argparse.ArgumentParser(
+        prog="flapfoam rank_tables",
+        description="cellDist as constant/cellDecomposition, or the cell "
+                    "order gap of decompositions")
+    how = p.add_mutually_exclusive_group(required=True)
+    how.add_argument("-cellDist", dest="cell_dist", nargs=2,
+                     metavar=("CELLDIST", "OUT"))
+    how.add_argument("-cellOrder", dest="cell_order", nargs="+",
+                     metavar="POLYMESH DECOMPOSITION")
+    a = p.parse_args(argv)
+    if a.cell_dist:
+        cell_decomposition(*a.cell_dist)
+        return
+    if len(a.cell_order) < 2:
+        p.error("-cellOrder: POLYMESH and at least one DECOMPOSITION")
+    for fname in a.cell_order[1:]:
+        gap = cell_order_gap(a.cell_order[0], read_decomposition(fname))
+        print("%s: mean cell distance of a face, largest rank %.0f, "
+              "mean over ranks %.0f" % (fname, gap.max(), gap.mean()))
 
 
 if __name__ == "__main__":
-    run_tool(main, sys.argv[1:])
+    run_tool(main)

@@ -21,11 +21,12 @@ fails (unit-tested: scripts/tests/test_mpi_counts_checks.py).
                         a rank)
 """
 
+import argparse
 import sys
 
 from flapfoam.io import mpi_counts
 from flapfoam.checks.checklist import Checks
-from flapfoam.errors import FlapFoamError, run_tool
+from flapfoam.errors import run_tool
 
 # What flapFoamMPICountersProbe sends (its header): rank -> function ->
 # (calls, bytes, destinations); every other function has no call
@@ -102,21 +103,38 @@ def steps(check, faces, dests, runs):
                          faces))
 
 
-def main(argv):
+def arguments(argv):
+    p = argparse.ArgumentParser(prog="flapfoam mpi_counts_checks",
+                                description=__doc__.split("\n\n")[0])
+    sub = p.add_subparsers(dest="check", required=True)
+    sub.add_parser("probe").add_argument("dir")
+    one = sub.add_parser("nonZero")
+    one.add_argument("dir")
+    one.add_argument("name")
+    many = sub.add_parser("steps")
+    many.add_argument("faces", type=int)
+    many.add_argument("dests", type=int)
+    many.add_argument("runs", nargs="+", metavar="DIR:N")
+    a = p.parse_args(argv)
+    if a.check == "steps" and len(a.runs) < 2:
+        many.error("at least two DIR:N")
+    return a
+
+
+def main(argv=None):
+    a = arguments(argv)
     check = Checks()
     try:
-        if argv[:1] == ["probe"] and len(argv) == 2:
-            probe(check, argv[1])
-        elif argv[:1] == ["nonZero"] and len(argv) == 3:
-            non_zero(check, argv[1], argv[2])
-        elif argv[:1] == ["steps"] and len(argv) >= 5:
-            steps(check, int(argv[1]), int(argv[2]), argv[3:])
+        if a.check == "probe":
+            probe(check, a.dir)
+        elif a.check == "nonZero":
+            non_zero(check, a.dir, a.name)
         else:
-            raise FlapFoamError(__doc__)
+            steps(check, a.faces, a.dests, a.runs)
     except ValueError as err:
         check(False, "counts: %s" % err)
     return check.finish(None, None)
 
 
 if __name__ == "__main__":
-    sys.exit(run_tool(main, sys.argv[1:]))
+    sys.exit(run_tool(main))

@@ -13,8 +13,10 @@ traffic of one step.  Standard library only.
     flapfoam mpi_counts DIR1 N1 DIR2 N2    per-rank totals per step
 """
 
+import argparse
 import os
-import sys
+
+from flapfoam.errors import FlapFoamError, run_tool
 
 KINDS = ("p2p", "collective")
 TOTALS = ("p2pCalls", "p2pBytes", "destinations", "collectiveCalls",
@@ -156,17 +158,25 @@ def _print(rows):
         print("%d %s" % (r, " ".join(_number(t[k]) for k in TOTALS)))
 
 
-def main(argv):
-    if len(argv) == 1:
-        _print(rank_totals(argv[0]))
-    elif len(argv) == 4:
-        _print(per_step(argv[0], int(argv[1]), argv[2], int(argv[3])))
-    else:
-        sys.exit(__doc__)
+def main(argv=None):
+    p = argparse.ArgumentParser(
+        prog="flapfoam mpi_counts", usage="%(prog)s DIR | DIR1 N1 DIR2 N2",
+        description="Per-rank MPI totals of a run, or per step from two "
+                    "runs of N1 and N2 steps.")
+    p.add_argument("runs", nargs="+", metavar="DIR")
+    a = p.parse_args(argv)
+    try:
+        if len(a.runs) == 1:
+            _print(rank_totals(a.runs[0]))
+        elif len(a.runs) == 4 and a.runs[1].isdigit() and \
+                a.runs[3].isdigit():
+            _print(per_step(a.runs[0], int(a.runs[1]), a.runs[2],
+                            int(a.runs[3])))
+        else:
+            p.error("DIR, or DIR1 N1 DIR2 N2 (N1, N2: steps)")
+    except ValueError as err:
+        raise FlapFoamError("mpiCounts: %s" % err)
 
 
 if __name__ == "__main__":
-    try:
-        main(sys.argv[1:])
-    except ValueError as err:
-        sys.exit("mpiCounts: %s" % err)
+    run_tool(main)

@@ -22,7 +22,7 @@ from dataclasses import dataclass
 
 from flapfoam.mesh.background_mesh import BACKGROUND, background_block_mesh, topo_set_refine
 from flapfoam.mesh.block_mesh import write_case
-from flapfoam.errors import run_tool
+from flapfoam.errors import FlapFoamError, run_tool
 from flapfoam.mesh.wing_mesh import (LEVELS, check_block_sides, level_component,
                                swept_envelope, wing_component)
 
@@ -117,13 +117,16 @@ def components(summary):
 
 
 def main(argv=None):
-    argv = sys.argv[1:] if argv is None else argv
-    if len(argv) != 2 or argv[0] != "components":
-        sys.exit("usage: flapfoam mesh_gen components"
-                 " MESHGEN.json")
-    listed = components(argv[1])
+    p = argparse.ArgumentParser(
+        prog="flapfoam mesh_gen",
+        description="The components a meshGen.json lists, a line each "
+                    "(name and post-processing words).")
+    p.add_argument("command", choices=["components"])
+    p.add_argument("json", metavar="MESHGEN.json")
+    a = p.parse_args(argv)
+    listed = components(a.json)
     if not listed:
-        sys.exit("%s: no components" % argv[1])
+        raise FlapFoamError("%s: no components" % a.json)
     for name, post in listed:
         print(" ".join([name] + post))
     return 0

@@ -28,6 +28,7 @@ curved edge (half the perimeter of the ellipse) and the straight root edge
                                          the second kind, parameter m)
 """
 
+import argparse
 import math
 
 import numpy as np
@@ -129,6 +130,14 @@ def summary():
     }
 
 
-if __name__ == "__main__":
+def main(argv=None):
+    argparse.ArgumentParser(
+        prog="flapfoam wing_geometry",
+        description="Prints the single-wing drone's Table 1 geometry and "
+                    "its analytic areas.").parse_args(argv)
     for k, v in summary().items():
         print("%-18s %.10g" % (k, v))
+
+
+if __name__ == "__main__":
+    main()

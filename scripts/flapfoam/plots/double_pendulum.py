@@ -9,16 +9,17 @@ reference, and their differences.
     doublePendulumFree.png  free pendulum (symplectic) against the reference
 
 Reads the same files as flapfoam.checks.double_pendulum, in the case folder it
-is run in (run ./Allrun first).
+is run in or -case DIR (run ./Allrun first).
 """
 
+import argparse
 import os
 
 import numpy as np
 
 from flapfoam.checks import double_pendulum as compare
 from flapfoam.plots.backend import pyplot
-from flapfoam.errors import run_tool
+from flapfoam.errors import FlapFoamError, run_tool
 
 plt = pyplot()
 
@@ -129,8 +130,16 @@ def plot_free(case, out):
     print(f"wrote {out}")
 
 
-def main():
-    case = compare.CASE
+def main(argv=None):
+    p = argparse.ArgumentParser(prog="flapfoam plot_double_pendulum",
+                                description=__doc__.split("\n\n")[0])
+    p.add_argument("-case", default=compare.CASE,
+                   help="the case folder (default: here)")
+    case = p.parse_args(argv).case
+    reference = os.path.join(case, "reference", "prescribed.dat")
+    if not os.path.isfile(reference):
+        raise FlapFoamError("plot_double_pendulum: no %s (run the case's "
+                            "./Allrun first)" % reference)
     plot_prescribed(case, os.path.join(case, "doublePendulum.png"))
     plot_free(case, os.path.join(case, "doublePendulumFree.png"))
 

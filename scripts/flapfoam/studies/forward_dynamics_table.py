@@ -9,9 +9,11 @@ aggregates over interleaved repetitions) as markdown:
     flapfoam forward_dynamics_table BENCHMARK.json > results.md
 """
 
+import argparse
 import json
 import sys
-from flapfoam.errors import run_tool
+
+from flapfoam.errors import FlapFoamError, run_tool
 
 UNITS = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}
 
@@ -77,12 +79,17 @@ def table(data):
 
 
 def main(argv=None):
-    argv = sys.argv[1:] if argv is None else argv
-    if len(argv) != 1:
-        sys.exit("usage: flapfoam forward_dynamics_table "
-                 "BENCHMARK.json")
-    with open(argv[0]) as f:
-        print("\n".join(table(json.load(f))))
+    p = argparse.ArgumentParser(prog="flapfoam forward_dynamics_table",
+                                description=__doc__.split("\n\n")[0])
+    p.add_argument("json", metavar="BENCHMARK.json",
+                   help="Google Benchmark's --benchmark_out file")
+    path = p.parse_args(argv).json
+    try:
+        with open(path) as f:
+            data = json.load(f)
+    except (OSError, ValueError) as e:
+        raise FlapFoamError("forward_dynamics_table: %s: %s" % (path, e))
+    print("\n".join(table(data)))
     return 0
 
 
