@@ -23,8 +23,10 @@ class Checks:
         self.ok = True
 
     def __call__(self, passed, text):
+        """Print the line; passed."""
         self.ok = self.ok and passed
         report(passed, text)
+        return passed
 
     def finish(self, path, results):
         """Write results to path (if given); the exit status."""

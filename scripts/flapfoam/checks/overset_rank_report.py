@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 # License
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
@@ -9,9 +8,11 @@ mesh update) in the solver logs of a serial and a parallel run of the same
 case, for the stencils given (default: inverseDistance and
 octreeInverseDistance).
 
-Usage: checkRankReport.py SERIAL PARALLEL [-stencils S...]
-  SERIAL/S and PARALLEL/S are cases with log.overPimpleDyMFoam (e.g.
-  compareMotion's -dir without and with -np).
+    flapfoam overset_rank_report SERIAL PARALLEL [-stencils S...]
+
+SERIAL/S and PARALLEL/S are cases with log.overPimpleDyMFoam (e.g.
+applications/test/overset/compareMotion's -dir without and with -np;
+applications/test/overset/checkRankReport runs them).
 Checks, per stencil:
   - each log holds one report (rankReport's default: the first update),
     with one row per rank, total/max/mean rows equal to the sums, maxima
@@ -40,6 +41,9 @@ import re
 import sys
 
 from flapfoam.bench import rank_tables
+from flapfoam.checks.checklist import Checks
+from flapfoam.errors import run_tool
+
 PREFIX = "oversetRankReport"
 STOCK = "inverseDistance"
 ANALYSIS = re.compile(
@@ -73,16 +77,6 @@ def read_reports(log):
     return reports
 
 
-class checker:
-    def __init__(self):
-        self.failed = 0
-
-    def check(self, ok, what):
-        print(("PASS " if ok else "FAIL ") + what)
-        self.failed += not ok
-        return ok
-
-
 def close(a, b):
     return abs(a - b) <= 1e-6*max(1.0, abs(b))
 
@@ -94,25 +88,25 @@ def check_table(c, name, r):
     largest = {k: max(row[k] for row in rows) for k in cols}
     mean = {k: total[k]/len(rows) for k in cols}
     share = total["remote"]/total["acceptors"] if total["acceptors"] else 0
-    c.check(len(rows) == r["ranks"]
-            and r["total"] == total and r["max"] == largest
-            and all(close(r["mean"][k], mean[k]) for k in cols)
-            and close(r["cellImbalance"], largest["cells"]/mean["cells"])
-            and close(r["remoteShare"], share)
-            and all(row["remote"] == row["mixed"] + row["allRemote"]
-                    and row["haloBytes"] == 8*row["procFaces"]
-                    for row in rows),
-            "%s: %d rows, total/max/mean rows, cellImbalance %g, "
-            "remoteShare %g, remote = mixed + allRemote, haloBytes = 8 "
-            "procFaces" % (name, len(rows), r["cellImbalance"],
-                           r["remoteShare"]))
+    c(len(rows) == r["ranks"]
+      and r["total"] == total and r["max"] == largest
+      and all(close(r["mean"][k], mean[k]) for k in cols)
+      and close(r["cellImbalance"], largest["cells"]/mean["cells"])
+      and close(r["remoteShare"], share)
+      and all(row["remote"] == row["mixed"] + row["allRemote"]
+              and row["haloBytes"] == 8*row["procFaces"]
+              for row in rows),
+      "%s: %d rows, total/max/mean rows, cellImbalance %g, "
+      "remoteShare %g, remote = mixed + allRemote, haloBytes = 8 "
+      "procFaces" % (name, len(rows), r["cellImbalance"],
+                     r["remoteShare"]))
 
 
 def one_report(c, name, case):
     log = os.path.join(case, "log.overPimpleDyMFoam")
     reports = read_reports(log) if os.path.isfile(log) else []
-    if not c.check(len(reports) == 1, "%s: one report in %s (found %d)"
-                   % (name, log, len(reports))):
+    if not c(len(reports) == 1, "%s: one report in %s (found %d)"
+             % (name, log, len(reports))):
         return None
     check_table(c, name, reports[0])
     return reports[0]
@@ -121,39 +115,39 @@ def one_report(c, name, case):
 def check_stock(c, name, r):
     t = r["total"]
     a = r["analysis"]
-    c.check(a == (t["acceptors"], t["acceptors"] - t["remote"], t["mixed"],
-                  t["allRemote"]),
-            "%s: the stencil's own count (interpolated, local, mixed, "
-            "remote) %s = the report's %s"
-            % (name, a, (t["acceptors"], t["acceptors"] - t["remote"],
-                         t["mixed"], t["allRemote"])))
+    c(a == (t["acceptors"], t["acceptors"] - t["remote"], t["mixed"],
+            t["allRemote"]),
+      "%s: the stencil's own count (interpolated, local, mixed, "
+      "remote) %s = the report's %s"
+      % (name, a, (t["acceptors"], t["acceptors"] - t["remote"],
+                   t["mixed"], t["allRemote"])))
 
 
 def check_runs(c, stencil, serial, parallel):
     nothing = ["remote", "mixed", "allRemote", "remoteSlots", "procFaces",
                "procPatches", "sent", "received", "sendRanks", "recvRanks"]
     s = serial["total"]
-    c.check(serial["ranks"] == 1 and all(s[k] == 0 for k in nothing),
-            "%s serial: one row, %s all 0"
-            % (stencil, " ".join(nothing)))
+    c(serial["ranks"] == 1 and all(s[k] == 0 for k in nothing),
+      "%s serial: one row, %s all 0"
+      % (stencil, " ".join(nothing)))
     p = parallel["total"]
     faces = [row["procFaces"] for row in parallel["rows"]]
-    c.check(p["cells"] == s["cells"] and p["acceptors"] == s["acceptors"],
-            "%s -np %d: cells %s add up to the serial %d, acceptors %s to "
-            "the serial %d"
-            % (stencil, parallel["ranks"],
-               "+".join(str(row["cells"]) for row in parallel["rows"]),
-               s["cells"],
-               "+".join(str(row["acceptors"]) for row in parallel["rows"]),
-               s["acceptors"]))
-    c.check(p["procFaces"] % 2 == 0
-            and (len(faces) != 2 or faces[0] == faces[1])
-            and p["sent"] == p["received"]
-            and p["sendRanks"] == p["recvRanks"],
-            "%s -np %d: processor faces %s (each seen from both sides), "
-            "cells sent %d = received, messages %d = received"
-            % (stencil, parallel["ranks"], faces, p["sent"],
-               p["sendRanks"]))
+    c(p["cells"] == s["cells"] and p["acceptors"] == s["acceptors"],
+      "%s -np %d: cells %s add up to the serial %d, acceptors %s to "
+      "the serial %d"
+      % (stencil, parallel["ranks"],
+         "+".join(str(row["cells"]) for row in parallel["rows"]),
+         s["cells"],
+         "+".join(str(row["acceptors"]) for row in parallel["rows"]),
+         s["acceptors"]))
+    c(p["procFaces"] % 2 == 0
+      and (len(faces) != 2 or faces[0] == faces[1])
+      and p["sent"] == p["received"]
+      and p["sendRanks"] == p["recvRanks"],
+      "%s -np %d: processor faces %s (each seen from both sides), "
+      "cells sent %d = received, messages %d = received"
+      % (stencil, parallel["ranks"], faces, p["sent"],
+         p["sendRanks"]))
     print("  %s -np %d: remote acceptors %d of %d (mixed %d, all remote %d, "
           "remote slots %d), share %.4f, cell imbalance %.4f"
           % (stencil, parallel["ranks"], p["remote"], p["acceptors"],
@@ -161,14 +155,15 @@ def check_runs(c, stencil, serial, parallel):
              parallel["remoteShare"], parallel["cellImbalance"]))
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[1])
+def main(argv=None):
+    ap = argparse.ArgumentParser(prog="flapfoam overset_rank_report",
+                                 description=__doc__.split("\n\n")[0])
     ap.add_argument("serial")
     ap.add_argument("parallel")
     ap.add_argument("-stencils", nargs="+",
                     default=[STOCK, "octreeInverseDistance"])
-    a = ap.parse_args()
-    c = checker()
+    a = ap.parse_args(argv)
+    c = Checks()
     reports = {}
     for stencil in a.stencils:
         serial = one_report(c, stencil + " serial",
@@ -185,11 +180,11 @@ def main():
     if STOCK in reports:
         for stencil, r in reports.items():
             if stencil != STOCK:
-                c.check(r["rows"] == reports[STOCK]["rows"],
-                        "%s parallel: every row equals %s's"
-                        % (stencil, STOCK))
-    sys.exit(1 if c.failed else 0)
+                c(r["rows"] == reports[STOCK]["rows"],
+                  "%s parallel: every row equals %s's"
+                  % (stencil, STOCK))
+    return c.finish(None, None)
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(run_tool(main))

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 # License
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
@@ -8,14 +7,16 @@ differ only in the overset stencil: each body's force of bodies.dat and
 the trajectory of joints.dat, rows matched by time (the readers of
 flapfoam.checks.check_run and flapfoam.io.tables).
 
-Usage: compareMotion.py REF CASE [-forceTol 0] [-qTol 0]
-                        [-columns q_0,qDot_0,q_1,qDot_1] [-bodies wing]
+    flapfoam overset_motion REF CASE [-forceTol 0] [-qTol 0]
+        [-columns q_0,qDot_0,q_1,qDot_1] [-bodies wing]
+
+(applications/test/overset/compareMotion runs the cases.)
 
   force (each body of the comma-separated -bodies): max over the rows and
          components of |F_CASE - F_REF| / max|F_REF|
          (max of |F| over the rows of the reference run); PASS if <= forceTol,
          each component reported.
-  trajectory: checkRun.py's relative difference |a - b| / max(|a|, |b|,
+  trajectory: check_run's relative difference |a - b| / max(|a|, |b|,
          floor), floor = 1e-3 x max |value| of that column over REF's rows;
          PASS if <= qTol for each of the columns.
 One PASS/FAIL line per check; exit status 1 on a failure.
@@ -28,30 +29,33 @@ import sys
 import numpy as np
 
 from flapfoam.checks import check_run
+from flapfoam.errors import FlapFoamError, run_tool
 from flapfoam.io.tables import joined_table, start_folders
 
 
 def bodies(case, name="eABAMeshMotion"):
     base = os.path.join(case, "postProcessing", name)
     if not start_folders(base):
-        sys.exit("compareMotion: no %s/<time>/bodies.dat" % base)
+        raise FlapFoamError("overset_motion: no %s/<time>/bodies.dat"
+                            % base)
     return joined_table(base, "bodies.dat", keep_earlier_at_start=False)
 
 
-def main():
-    ap = argparse.ArgumentParser()
+def arguments(argv):
+    ap = argparse.ArgumentParser(prog="flapfoam overset_motion",
+                                 description=__doc__.split("\n\n")[0])
     ap.add_argument("ref")
     ap.add_argument("case")
     ap.add_argument("-forceTol", dest="force_tol", type=float, default=0.0)
     ap.add_argument("-qTol", dest="q_tol", type=float, default=0.0)
     ap.add_argument("-columns", default="q_0,qDot_0,q_1,qDot_1")
     ap.add_argument("-bodies", default="wing")
-    a = ap.parse_args()
-    name = os.path.basename(os.path.normpath(a.case))
-    ref_name = os.path.basename(os.path.normpath(a.ref))
-    status = 0
+    return ap.parse_args(argv)
 
-    # Forces
+
+def forces(a, name, ref_name):
+    """Each body's force against the reference's; 0 if all pass, else 1."""
+    status = 0
     ca, A = bodies(a.ref)
     cb, B = bodies(a.case)
     ia, ib = check_run.match_rows(A, B)
@@ -76,7 +80,13 @@ def main():
                ", ".join("F%s %.1e" % (c, r) for c, r in zip("xyz", rel)),
                scale))
 
-    # Trajectory (checkRun.py's relative difference with a floor)
+    return status
+
+
+def trajectory(a, name, ref_name):
+    """The joints' columns against the reference's (check_run's relative
+    difference with a floor); 0 if they pass, else 1."""
+    status = 0
     ca, A = check_run.joints(a.ref)
     cb, B = check_run.joints(a.case)
     ia, ib = check_run.match_rows(A, B)
@@ -98,8 +108,15 @@ def main():
             "vs %s, %d rows: max relative difference %.2e (tol %g): %s"
             % (ref_name, len(ia), max_rel, a.q_tol,
                ", ".join("%s %.1e" % kv for kv in worst.items())))
-    return 1 if status else 0
+    return status
+
+
+def main(argv=None):
+    a = arguments(argv)
+    name = os.path.basename(os.path.normpath(a.case))
+    ref_name = os.path.basename(os.path.normpath(a.ref))
+    return forces(a, name, ref_name) | trajectory(a, name, ref_name)
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_tool(main))

@@ -9,7 +9,7 @@ its wing's rows as the flightData function object writes them (centre of
 mass position and velocity, from the dictionary's centreOfMass, row-major
 orientation, angular velocity, force; the first row's loads NaN).
 
-    python3 syntheticFlightData.py CASE -CL A -CD0 B -CD1 C
+    flapfoam synthetic_flight_data CASE -CL A -CD0 B -CD1 C
         [-cycles N] [-dt DT] [-thinAfter T] [-noForce]
 
 reads CASE/constant/dynamicMeshDict and writes
@@ -24,6 +24,7 @@ import os
 import h5py
 import numpy as np
 
+from flapfoam.errors import run_tool
 from flapfoam.io.foam_dict import multibody_coeffs
 from flapfoam.models.quasi_steady import SingleWingDrone, vec
 
@@ -47,8 +48,9 @@ def wing_rows(drone, states, centre):
     return d
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+def main(argv=None):
+    parser = argparse.ArgumentParser(prog="flapfoam synthetic_flight_data",
+                                     description=__doc__.split("\n\n")[0])
     parser.add_argument("case")
     for k in ("CL", "CD0", "CD1"):
         parser.add_argument("-" + k, type=float, required=True)
@@ -57,7 +59,7 @@ def main():
     parser.add_argument("-thinAfter", dest="thin_after", type=float,
                         default=float("inf"))
     parser.add_argument("-noForce", dest="no_force", action="store_true")
-    args = parser.parse_args()
+    args = parser.parse_args(argv)
     coeffs = multibody_coeffs(os.path.join(args.case, "constant",
                                           "dynamicMeshDict"))
     drone = SingleWingDrone(coeffs)
@@ -78,4 +80,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run_tool(main)
