@@ -80,7 +80,7 @@ def main(argv=None):
                        mesh_gen.pose(args.phi, args.alpha))
     mesh_gen.write_wing_and_background(args.output, mesh_gen.header(argv),
                                    "Single-wing drone", m)
-    # components in merge order (scripts/makeOversetMesh): the wing is the
+    # components in merge order (bin/tools/makeOversetMesh): the wing is the
     # master, so that its overset patch becomes the first patch
     summary = dict(components=[dict(name="wing"), dict(name="background")],
                    level=args.level, levelParameters=m.lev,

@@ -10,7 +10,7 @@ summary (meshGen.json).  The cases add their own components and parameters.
 
 prints the summary's components in merge order, a line each: the name and
 the command run on its points after blockMesh (if any), for
-scripts/makeOversetMesh.
+bin/tools/makeOversetMesh.
 """
 
 import argparse

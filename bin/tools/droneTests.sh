@@ -1,6 +1,6 @@
 #------------------------------------------------------------------------------
 # flapFoam: shell functions of the drone cases' Alltest scripts (sourced,
-# with the project's check functions, scripts/checkFunctions).  Each
+# with the project's check functions, bin/tools/checkFunctions).  Each
 # prints PASS/FAIL lines "PASS [label] ..." (a failure sets status=1):
 # run, motionCycle, climbed, cleanKeepsRuns, lockedFolder, plots,
 # copiedCase, result, flightData, quasiSteady,
@@ -11,7 +11,7 @@
 #------------------------------------------------------------------------------
 
 projectScripts="$(cd "${BASH_SOURCE[0]%/*}" && pwd -P)"
-# shellcheck source=scripts/checkFunctions
+# shellcheck source=bin/tools/checkFunctions
 . "$projectScripts/checkFunctions"
 
 # Allrun options: tight linear solvers (p, pFinal, U, UFinal tolerance
@@ -25,7 +25,7 @@ do
             -set system/fvSolution "solvers/$s/relTol" 0)
 done
 laminar=(-set constant/turbulenceProperties simulationType laminar)
-checkRun="$projectScripts/../cases/singleWingDrone/scripts/checkRun.py"
+checkRun="$projectScripts/../../cases/singleWingDrone/scripts/checkRun.py"
 
 # run [-each] <label> <Allrun options...>: the run's log in
 # $testRuns/log.Alltest.<label>; one line for the run (completed, no orphan at
