@@ -30,6 +30,10 @@ License
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+// The definition (C++11: a bound reference, as in gtest's EXPECT_EQ, uses it)
+constexpr Foam::label Foam::couplingGraph::faceWeight;
+
+
 Foam::labelList Foam::couplingGraph::integerWeights
 (
     const scalarField& weights,

@@ -23,6 +23,8 @@ License
 
 #include "graphPartitioner.H"
 
+#include <algorithm>
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::graphPartitioner::graphPartitioner(const oversetGraphSettings& settings)
@@ -43,9 +45,28 @@ Foam::labelList Foam::graphPartitioner::partition
     {
         return labelList(graph.nCells(), Zero);
     }
-    return settings_.partitioner() == library::metis
-        ? metis(graph, nParts)
-        : scotch(graph, nParts);
+    labelList part
+    (
+        settings_.partitioner() == library::metis
+      ? metis(graph, nParts)
+      : scotch(graph, nParts)
+    );
+    labelList cells(nParts, Zero);
+    for (const label p : part)
+    {
+        ++cells[p];
+    }
+    const label nEmpty = std::count(cells.begin(), cells.end(), 0);
+    if (nEmpty)
+    {
+        WarningInFunction
+            << libraryName() << " left " << nEmpty << " of " << nParts
+            << " parts empty (cells per part " << cells << ", a graph of "
+            << graph.nCells() << " cells): fewer balance constraints"
+            << " (poseGroups 0), a larger oversetImbalance or the scotch"
+            << " partitioner may fill them" << endl;
+    }
+    return part;
 }
 
 

@@ -315,6 +315,13 @@ bool Foam::oversetCouplings::readData(Istream& is)
             << exit(FatalIOError);
     }
     readEntry(is, "acceptorPoses", acceptorPoses_);
+    if (acceptorPoses_.size() != nCells)
+    {
+        FatalIOErrorInFunction(is)
+            << "nCells " << nCells << " but acceptorPoses lists "
+            << acceptorPoses_.size() << " cells: one entry per cell is"
+            << " allowed" << exit(FatalIOError);
+    }
     readEntry(is, "donorPoses", donorPoses_);
     readEntry(is, "holePoses", holePoses_);
     readEntry(is, "acceptors", acceptors_);

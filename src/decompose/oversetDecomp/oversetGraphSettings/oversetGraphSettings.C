@@ -96,7 +96,7 @@ Foam::oversetGraphSettings::oversetGraphSettings
     pose_(coeffs.getOrDefault<label>("pose", -1)),
     library_
     (
-        libraryNames.getOrDefault("partitioner", coeffs, library::metis)
+        readChoice(coeffs, "partitioner", libraryNames, library::metis)
     ),
     imbalance_
     (
