@@ -39,6 +39,7 @@ import argparse
 import os
 import re
 import sys
+from dataclasses import dataclass
 
 from flapfoam.bench import rank_tables
 from flapfoam.checks.checklist import Checks
@@ -51,11 +52,28 @@ ANALYSIS = re.compile(
     r"mixed local/remote:(\d+)\s+remote:(\d+)\)")
 
 
+@dataclass
+class RankReport:
+    """One oversetRankReport: its title's time, stencil and ranks, the
+    columns, a row per rank and the total, max and mean rows ({column:
+    count}, integers but the means), the cell imbalance, the remote share
+    and the stock stencil's last count line before it (interpolated, local,
+    mixed, remote; None if there is none)."""
+    time: float
+    stencil: str
+    ranks: int
+    columns: list
+    rows: list
+    total: dict
+    max: dict
+    mean: dict
+    cell_imbalance: float
+    remote_share: float
+    analysis: tuple = None
+
+
 def read_reports(log):
-    """The reports of a log (flapfoam.bench.rank_tables), each a dict: time,
-    stencil, ranks, columns, rows (per rank), total, max, mean (counts as
-    integers), cellImbalance, remoteShare and analysis (the stock stencil's
-    last count line before it, or None)."""
+    """The RankReports of a log (read by flapfoam.bench.rank_tables)."""
     analyses = []
     for i, line in enumerate(open(log, errors="replace")):
         m = ANALYSIS.search(line)
@@ -66,13 +84,13 @@ def read_reports(log):
         info = t["info"]
         before = [a for i, a in analyses if i < t["line"]]
         counts = [{k: int(v) for k, v in row.items()} for row in t["rows"]]
-        reports.append(dict(
+        reports.append(RankReport(
             time=info.get("time"), stencil=info.get("stencil"),
             ranks=int(info.get("ranks", 0)), columns=t["columns"],
             rows=counts, total={k: int(v) for k, v in t["total"].items()},
             max={k: int(v) for k, v in t["max"].items()}, mean=t["mean"],
-            cellImbalance=info.get("cellImbalance"),
-            remoteShare=info.get("remoteShare"),
+            cell_imbalance=info.get("cellImbalance"),
+            remote_share=info.get("remoteShare"),
             analysis=before[-1] if before else None))
     return reports
 
@@ -83,23 +101,23 @@ def close(a, b):
 
 def check_table(c, name, r):
     """The derived rows and figures of one report"""
-    rows, cols = r["rows"], r["columns"]
+    rows, cols = r.rows, r.columns
     total = {k: sum(row[k] for row in rows) for k in cols}
     largest = {k: max(row[k] for row in rows) for k in cols}
     mean = {k: total[k]/len(rows) for k in cols}
     share = total["remote"]/total["acceptors"] if total["acceptors"] else 0
-    c(len(rows) == r["ranks"]
-      and r["total"] == total and r["max"] == largest
-      and all(close(r["mean"][k], mean[k]) for k in cols)
-      and close(r["cellImbalance"], largest["cells"]/mean["cells"])
-      and close(r["remoteShare"], share)
+    c(len(rows) == r.ranks
+      and r.total == total and r.max == largest
+      and all(close(r.mean[k], mean[k]) for k in cols)
+      and close(r.cell_imbalance, largest["cells"]/mean["cells"])
+      and close(r.remote_share, share)
       and all(row["remote"] == row["mixed"] + row["allRemote"]
               and row["haloBytes"] == 8*row["procFaces"]
               for row in rows),
       "%s: %d rows, total/max/mean rows, cellImbalance %g, "
       "remoteShare %g, remote = mixed + allRemote, haloBytes = 8 "
-      "procFaces" % (name, len(rows), r["cellImbalance"],
-                     r["remoteShare"]))
+      "procFaces" % (name, len(rows), r.cell_imbalance,
+                     r.remote_share))
 
 
 def one_report(c, name, case):
@@ -113,8 +131,8 @@ def one_report(c, name, case):
 
 
 def check_stock(c, name, r):
-    t = r["total"]
-    a = r["analysis"]
+    t = r.total
+    a = r.analysis
     c(a == (t["acceptors"], t["acceptors"] - t["remote"], t["mixed"],
             t["allRemote"]),
       "%s: the stencil's own count (interpolated, local, mixed, "
@@ -126,19 +144,19 @@ def check_stock(c, name, r):
 def check_runs(c, stencil, serial, parallel):
     nothing = ["remote", "mixed", "allRemote", "remoteSlots", "procFaces",
                "procPatches", "sent", "received", "sendRanks", "recvRanks"]
-    s = serial["total"]
-    c(serial["ranks"] == 1 and all(s[k] == 0 for k in nothing),
+    s = serial.total
+    c(serial.ranks == 1 and all(s[k] == 0 for k in nothing),
       "%s serial: one row, %s all 0"
       % (stencil, " ".join(nothing)))
-    p = parallel["total"]
-    faces = [row["procFaces"] for row in parallel["rows"]]
+    p = parallel.total
+    faces = [row["procFaces"] for row in parallel.rows]
     c(p["cells"] == s["cells"] and p["acceptors"] == s["acceptors"],
       "%s -np %d: cells %s add up to the serial %d, acceptors %s to "
       "the serial %d"
-      % (stencil, parallel["ranks"],
-         "+".join(str(row["cells"]) for row in parallel["rows"]),
+      % (stencil, parallel.ranks,
+         "+".join(str(row["cells"]) for row in parallel.rows),
          s["cells"],
-         "+".join(str(row["acceptors"]) for row in parallel["rows"]),
+         "+".join(str(row["acceptors"]) for row in parallel.rows),
          s["acceptors"]))
     c(p["procFaces"] % 2 == 0
       and (len(faces) != 2 or faces[0] == faces[1])
@@ -146,13 +164,13 @@ def check_runs(c, stencil, serial, parallel):
       and p["sendRanks"] == p["recvRanks"],
       "%s -np %d: processor faces %s (each seen from both sides), "
       "cells sent %d = received, messages %d = received"
-      % (stencil, parallel["ranks"], faces, p["sent"],
+      % (stencil, parallel.ranks, faces, p["sent"],
          p["sendRanks"]))
     print("  %s -np %d: remote acceptors %d of %d (mixed %d, all remote %d, "
           "remote slots %d), share %.4f, cell imbalance %.4f"
-          % (stencil, parallel["ranks"], p["remote"], p["acceptors"],
+          % (stencil, parallel.ranks, p["remote"], p["acceptors"],
              p["mixed"], p["allRemote"], p["remoteSlots"],
-             parallel["remoteShare"], parallel["cellImbalance"]))
+             parallel.remote_share, parallel.cell_imbalance))
 
 
 def main(argv=None):
@@ -180,7 +198,7 @@ def main(argv=None):
     if STOCK in reports:
         for stencil, r in reports.items():
             if stencil != STOCK:
-                c(r["rows"] == reports[STOCK]["rows"],
+                c(r.rows == reports[STOCK].rows,
                   "%s parallel: every row equals %s's"
                   % (stencil, STOCK))
     return c.finish(None, None)
