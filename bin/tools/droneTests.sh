@@ -27,12 +27,12 @@ done
 laminar=(-set constant/turbulenceProperties simulationType laminar)
 checkRun="$projectScripts/../../cases/singleWingDrone/scripts/checkRun.py"
 
-# run [-each] <label> <Allrun options...>: the run's log in
+# runAllrun [-each] <label> <Allrun options...>: the run's log in
 # $testRuns/log.Alltest.<label>; one line for the run (completed, no orphan at
 # any step when the case checks orphans) and the FAIL lines of its checks;
 # with -each every PASS/FAIL line of the run instead, and a FAIL line if
 # it does not complete
-run()
+runAllrun()
 {
     local each=false
     [ "$1" = -each ] && { each=true; shift; }
