@@ -38,7 +38,7 @@ Description
 #include "scratchTime.H"
 #include "decompositionMethod.H"
 #include "IStringStream.H"
-#include "OStringStream.H"
+#include "partSizes.H"
 #include "throwingTestMain.H"
 
 using namespace boxCase;
@@ -63,29 +63,6 @@ labelList parts(const word& method, const label n, const scalarField& w)
 }
 
 
-//- Cells per part
-labelList sizes(const labelList& part, const label n)
-{
-    labelList count(n, Zero);
-    for (const label p : part)
-    {
-        EXPECT_TRUE(p >= 0 && p < n) << "part " << p;
-        if (p >= 0 && p < n)
-        {
-            ++count[p];
-        }
-    }
-    return count;
-}
-
-
-std::string text(const labelList& list)
-{
-    OStringStream os;
-    os  << list;
-    return os.str();
-}
-
 const wordList methods({"metis", "scotch"});
 
 } // End anonymous namespace
@@ -101,7 +78,7 @@ TEST(decompose, balancedPartsOfEveryCell)
         {
             const labelList part(parts(method, n, scalarField()));
             ASSERT_EQ(part.size(), 24) << method;
-            const labelList count(sizes(part, n));
+            const labelList count(partSizes(part, n));
             EXPECT_GT(min(count), 0) << method << " " << text(count);
             EXPECT_LE(max(count) - min(count), 1)
                 << method << " " << n << " parts: " << text(count);
@@ -124,7 +101,7 @@ TEST(decompose, cellWeightsMoveTheCut)
     for (const word& method : methods)
     {
         const labelList part(parts(method, 2, w));
-        const labelList count(sizes(part, 2));
+        const labelList count(partSizes(part, 2));
         scalarField load(2, Zero);
         forAll(part, celli)
         {

@@ -30,6 +30,7 @@ Description
 #include "graphPartitioner.H"
 #include "oversetGraphSettings.H"
 #include "IStringStream.H"
+#include "partSizes.H"
 
 using namespace couplingsBox;
 
@@ -47,21 +48,6 @@ oversetGraphSettings settings(const std::string& text)
     );
 }
 
-
-//- The cells of each part
-labelList partSizes(const labelList& part, const label nParts)
-{
-    labelList sizes(nParts, Zero);
-    for (const label p : part)
-    {
-        EXPECT_TRUE(p >= 0 && p < nParts) << "part " << p;
-        if (p >= 0 && p < nParts)
-        {
-            ++sizes[p];
-        }
-    }
-    return sizes;
-}
 
 //- The partitioners: METIS balancing the cells (a graph of 24 cells, the
 //- overset work on 6 of them, cannot balance the work too: poseGroups 0,
