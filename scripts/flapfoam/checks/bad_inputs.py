@@ -216,6 +216,15 @@ def run_row(row, folder, log):
     return Outcome(rc, output, changed)
 
 
+def said(row, output):
+    """The output's line that holds the row's first expected text."""
+    for line in output.splitlines():
+        if (row.expect and row.expect[0] in line) or \
+           (not row.expect and re.search(row.expect_regex[0], line)):
+            return line.strip()[:200]
+    return ""
+
+
 def verdict(row, outcome):
     """(passed, text) of a row's outcome."""
     rc = outcome.rc
@@ -233,10 +242,10 @@ def verdict(row, outcome):
     problems += ["no line matches [%s]" % t for t in row.expect_regex
                  if not re.search(t, outcome.output, re.M)]
     problems += ["%s/ changed" % u for u in outcome.changed]
-    first = (row.expect + row.expect_regex)[0]
     if problems:
         return False, "bad input %s: %s" % (row.name, "; ".join(problems))
-    return True, "bad input %s (exit %d): \"%s\"" % (row.name, rc, first)
+    return True, "bad input %s (exit %d): %s" % (row.name, rc,
+                                                 said(row, outcome.output))
 
 
 def check_row(row, settings):
