@@ -58,8 +58,9 @@ unchanged runs
     assert first.edits == [["sed", "value", "s/good/3/"],
                            ["write", "other", "a\\nb"]]
     assert first.run == ["prog", "-x", "two words"]
-    assert (first.exit, first.expect, first.timeout) == (1, ["value 3"], 5.0)
-    assert rows[1].expect_regex == ["^x$"] and rows[1].unchanged == ["runs"]
+    assert (first.exit, first.timeout) == (1, 5.0)
+    assert first.expect == [(False, "value 3")]
+    assert rows[1].expect == [(True, "^x$")] and rows[1].unchanged == ["runs"]
 
 
 @pytest.mark.parametrize("text, message", [

@@ -62,8 +62,7 @@ class BadInput:
     edits: list = field(default_factory=list)
     run: list = field(default_factory=list)
     exit: int = None
-    expect: list = field(default_factory=list)
-    expect_regex: list = field(default_factory=list)
+    expect: list = field(default_factory=list)   # (regex?, text), in order
     unchanged: list = field(default_factory=list)
     timeout: float = 60.0
 
@@ -113,13 +112,13 @@ def _add(row, key, rest, where):
     elif key == "exit":
         row.exit = _number(int, rest, where)
     elif key == "expect":
-        row.expect.append(rest)
+        row.expect.append((False, rest))
     elif key == "expectRegex":
         try:
             re.compile(rest)
         except re.error as e:
             raise FlapFoamError("%s: expectRegex '%s': %s" % (where, rest, e))
-        row.expect_regex.append(rest)
+        row.expect.append((True, rest))
     elif key == "unchanged":
         row.unchanged.append(rest)
     else:
@@ -152,7 +151,7 @@ def read_table(path, variables):
         else:
             _add(rows[-1], key, rest, where)
     for r in rows:
-        if not r.run or not (r.expect or r.expect_regex):
+        if not r.run or not r.expect:
             raise FlapFoamError("%s line %d: badInput %s needs a run line and "
                                 "an expect or expectRegex line"
                                 % (path, r.line, r.name))
@@ -216,11 +215,16 @@ def run_row(row, folder, log):
     return Outcome(rc, output, changed)
 
 
+def found(expectation, text):
+    """Whether text holds an expectation (regex?, pattern)."""
+    regex, pattern = expectation
+    return bool(re.search(pattern, text, re.M)) if regex else pattern in text
+
+
 def said(row, output):
     """The output's line that holds the row's first expected text."""
     for line in output.splitlines():
-        if (row.expect and row.expect[0] in line) or \
-           (not row.expect and re.search(row.expect_regex[0], line)):
+        if found(row.expect[0], line):
             return line.strip()[:200]
     return ""
 
@@ -237,10 +241,8 @@ def verdict(row, outcome):
                     "success)" % rc]
     else:
         problems = []
-    problems += ["output lacks [%s]" % t for t in row.expect
-                 if t not in outcome.output]
-    problems += ["no line matches [%s]" % t for t in row.expect_regex
-                 if not re.search(t, outcome.output, re.M)]
+    problems += ["output lacks [%s]" % e[1] for e in row.expect
+                 if not found(e, outcome.output)]
     problems += ["%s/ changed" % u for u in outcome.changed]
     if problems:
         return False, "bad input %s: %s" % (row.name, "; ".join(problems))
