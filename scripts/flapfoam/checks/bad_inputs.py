@@ -208,10 +208,10 @@ def run_row(row, folder, log):
         rc, output = None, (e.output or b"").decode(errors="replace")
     except OSError as e:
         rc, output = 127, "%s: %s" % (row.run[0], e.strerror)
-    with open(log, "w") as fh:
-        fh.write(output)
     changed = [u for u, b in zip(row.unchanged, before)
                if listing(os.path.join(folder, u)) != b]
+    with open(log, "w") as fh:
+        fh.write(output)
     return Outcome(rc, output, changed)
 
 
