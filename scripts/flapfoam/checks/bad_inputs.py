@@ -163,11 +163,12 @@ def read_table(path, variables):
 def apply_edit(words, folder):
     """One edit in folder; an error names the edit if it fails."""
     verb, path = words[0], os.path.join(folder, words[1])
+    # From the folder, as a dictionary's #include may be relative to it
     if verb in ("set", "add", "remove"):
-        command = ["foamDictionary", path, "-entry", words[2], "-" + verb]
+        command = ["foamDictionary", words[1], "-entry", words[2], "-" + verb]
         command += words[3:]
     elif verb == "sed":
-        command = ["sed", "-i", "-e", words[2], path]
+        command = ["sed", "-i", "-e", words[2], words[1]]
     else:
         command = None
         if verb == "delete":
@@ -176,8 +177,9 @@ def apply_edit(words, folder):
             with open(path, "w" if verb == "write" else "a") as fh:
                 fh.write(words[2].replace("\\n", "\n") + "\n")
     if command:
-        done = subprocess.run(command, stdout=subprocess.DEVNULL,
-                              stderr=subprocess.PIPE, text=True)
+        done = subprocess.run(command, cwd=folder, text=True,
+                              stdout=subprocess.DEVNULL,
+                              stderr=subprocess.PIPE)
         if done.returncode != 0:
             raise FlapFoamError("edit %s failed: %s"
                                 % (" ".join(words), done.stderr.strip()[-300:]))
