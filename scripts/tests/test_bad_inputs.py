@@ -139,3 +139,10 @@ def test_without_base_runs_here(tmp_path, capsys, monkeypatch):
 def test_options_refused(tmp_path, extra, message):
     with pytest.raises(FlapFoamError, match=message):
         run(tmp_path, "badInput b\n%s\nexpect x\n" % SAYS, *extra)
+
+
+def test_case_is_the_rows_folder(tmp_path, capsys):
+    text = ("badInput c\nrun %s -c \"import sys; sys.exit(sys.argv[1])\" "
+            "${case}\nexpect ${case}\n" % PY)
+    assert run(tmp_path, text) == 0
+    assert str(tmp_path / "runs" / "c") in capsys.readouterr().out

@@ -34,10 +34,12 @@ NAME" line and the lines below it:
 Every row needs run and an expect or expectRegex.  With -base, each row
 runs in DIR/NAME (a copy of the base, removed when the row passes); without
 it, in the folder the runner was started in, its output in DIR/log.NAME.
-${NAME} anywhere in a row is the value of -var NAME=VALUE; ${dir} is DIR.
+${NAME} anywhere in a row is the value of -var NAME=VALUE; ${dir} is DIR,
+${case} in run and expect lines the folder the row runs in.
 """
 
 import argparse
+import dataclasses
 import os
 import re
 import shlex
@@ -262,6 +264,9 @@ def check_row(row, settings):
         log = os.path.join(folder, "log")
     else:
         folder, log = os.getcwd(), os.path.join(settings.dir, "log." + slug)
+    row = dataclasses.replace(
+        row, run=[w.replace("${case}", folder) for w in row.run],
+        expect=[(r, t.replace("${case}", folder)) for r, t in row.expect])
     try:
         for words in row.edits:
             apply_edit(words, folder)
@@ -291,7 +296,7 @@ def main(argv=None):
                         metavar="NAME=VALUE", help="${NAME} in the table")
     parser.add_argument("-only", help="run only this row")
     settings = parser.parse_args(argv)
-    variables = {"dir": settings.dir}
+    variables = {"dir": settings.dir, "case": "${case}"}   # case: per row
     for v in settings.var:
         name, sep, value = v.partition("=")
         if not sep or not re.fullmatch(r"\w+", name):
