@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 #------------------------------------------------------------------------------
 # flapFoam: shell functions of the drone cases' Alltest scripts (sourced,
 # with the project's check functions, bin/tools/checkFunctions).  Each
