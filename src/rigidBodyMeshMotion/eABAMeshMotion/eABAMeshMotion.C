@@ -147,14 +147,21 @@ void Foam::eABAMeshMotion::readBackground()
         wordList({"cellZone", "body", "components"})
     );
 
+    // The model's bodyID() of an unknown name is a FatalError of its table:
+    // the name is checked here first, with the file and the key
     const word bodyName(dict.get<word>("body"));
-    backgroundBodyID_ = model_.bodyID(bodyName);
-    if (backgroundBodyID_ < 0)
+    wordList names(model_.nBodies());
+    forAll(names, bodyi)
+    {
+        names[bodyi] = model_.name(bodyi);
+    }
+    if (!names.found(bodyName))
     {
         FatalIOErrorInFunction(dict)
-            << "body " << bodyName << " is not a body of the tree"
-            << exit(FatalIOError);
+            << "body " << bodyName << " is not a body of the tree; allowed: "
+            << names << exit(FatalIOError);
     }
+    backgroundBodyID_ = model_.bodyID(bodyName);
 
     backgroundMask_ = dict.getOrDefault<vector>("components", vector::one);
     for (direction d = 0; d < vector::nComponents; ++d)
