@@ -64,6 +64,26 @@ std::string coeffs(const std::string& joint, const std::string& extra)
 }
 
 
+//- A body on a slider (Pz) with the background following it in the
+//- given components ("(0 0 1)")
+std::string slider(const std::string& components)
+{
+    return coeffs
+    (
+        "Pz",
+        "background { cellZone background; body wing; components "
+      + components + "; }"
+    );
+}
+
+
+//- The free fall from rest at time t: -g t^2/2
+scalar fallen(const scalar t)
+{
+    return -0.5*9.81*sqr(t);
+}
+
+
 //- The box in its zones, written (points0 are read), and the motion
 class motionCase
 {
@@ -158,13 +178,9 @@ public:
 // background (following the wing's centre of mass in z only) too
 TEST(eABAMeshMotion, freeFallMovesTheZones)
 {
-    motionCase c
-    (
-        coeffs("Pz", "background { cellZone background; body wing;"
-                     " components (0 0 1); }")
-    );
+    motionCase c(slider("(0 0 1)"));
     const pointField p(c.advance(20));
-    const scalar dz = -0.5*9.81*sqr(c.t());
+    const scalar dz = fallen(c.t());
     EXPECT_NEAR(c.t(), 20*deltaT, 1e-15);
 
     scalar maxError = 0;
@@ -181,13 +197,9 @@ TEST(eABAMeshMotion, freeFallMovesTheZones)
 // fall in z leaves it in place, while the wing's own points fall
 TEST(eABAMeshMotion, backgroundFollowsItsComponentsOnly)
 {
-    motionCase c
-    (
-        coeffs("Pz", "background { cellZone background; body wing;"
-                     " components (1 1 0); }")
-    );
+    motionCase c(slider("(1 1 0)"));
     const pointField p(c.advance(10));
-    const scalar dz = -0.5*9.81*sqr(c.t());
+    const scalar dz = fallen(c.t());
 
     label nWing = 0;
     forAll(p, pointi)
@@ -242,10 +254,9 @@ TEST(eABAMeshMotion, rotationTurnsTheWingRigidly)
 // Bad background entries: each a FatalIOError naming it
 TEST(eABAMeshMotion, badBackground)
 {
-    const std::string bg("background { cellZone background; body wing;");
     expectIOError
     (
-        [&]{ motionCase c(coeffs("Pz", bg + " components (0 2 1); }")); },
+        [&]{ motionCase c(slider("(0 2 1)")); },
         {"components (0 2 1)", "each component must be 0 (fixed) or 1"}
     );
     expectIOError
@@ -268,7 +279,8 @@ TEST(eABAMeshMotion, badBackground)
     );
     expectIOError
     (
-        [&]{ motionCase c(coeffs("Pz", bg + " component (0 0 1); }")); },
+        [&]{ motionCase c(coeffs("Pz",
+            "background { cellZone background; body wing; component (0 0 1); }")); },
         {"Unknown key 'component'"}
     );
 }
