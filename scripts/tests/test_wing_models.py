@@ -69,10 +69,10 @@ def test_levels_refine_in_order():
     h = [background_cell_size(LEVELS[n], BACKGROUND) for n in order]
     assert all(a > b for a, b in zip(h, h[1:]))
     assert h[1] == pytest.approx(0.3/(12*2**3))           # coarse: 3.13 mm
-    for key in ("nS", "nL", "nC"):
-        assert [LEVELS[n][key] for n in order] == sorted(
-            LEVELS[n][key] for n in order)
-    ds = [LEVELS[n]["dsE"] for n in order]
+    for key in ("n_s", "n_l", "n_c"):
+        counts = [getattr(LEVELS[n], key) for n in order]
+        assert counts == sorted(counts)
+    ds = [LEVELS[n].ds_e for n in order]
     assert ds == sorted(ds, reverse=True)
 
 
@@ -88,3 +88,12 @@ def test_mesh_components_in_merge_order(tmp_path, capsys):
     assert mesh_gen.main(["components", str(summary)]) == 0
     assert capsys.readouterr().out == \
         "wing\nbody sphereMesh.py -map\nbackground\n"
+
+
+def test_parameters_by_their_file_names():
+    from flapfoam.mesh.parameters import camel, file_entries
+    assert camel("n_ref") == "nRef" and camel("core_frac") == "coreFrac"
+    assert file_entries(LEVELS["coarse"]) == dict(
+        nS=24, nL=5, nC=5, nT=2, dsE=0.4e-3, q=1.25, N0=12, nRef=3)
+    assert list(file_entries(LEVELS["tiny"]))[-2:] == ["nBuffer", "margin"]
+    assert file_entries(BACKGROUND)["finalMargin"] == 1

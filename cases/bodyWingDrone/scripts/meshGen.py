@@ -34,6 +34,7 @@ The wing's axes pass through the body centre (the origin), so the wing
 component is the single-wing drone's at the same pose.  Units: metres.
 """
 
+import dataclasses
 import math
 import os
 import sys
@@ -42,6 +43,7 @@ import sphereMesh  # this case's body component
 from flapfoam.mesh import mesh_gen
 from flapfoam.mesh import wing_mesh
 from flapfoam.mesh.block_mesh import FOAM_HEADER, write_case
+from flapfoam.mesh.parameters import file_entries
 
 # Body pitch the refined region allows for (the stroke plane tilts with it)
 THETA_MAX = math.radians(20)
@@ -51,7 +53,7 @@ THETA_MAX = math.radians(20)
 # 22.5 mm), so that the body's walls need not cut it (system/fvSchemes:
 # noHoleCut ((2 1))).  Why this layout, and the layouts that failed a whole
 # cycle of Allrun -motionOnly: README.md, "Whole cycles".
-COMPONENT = dict(wing_mesh.COMPONENT, rootMargin=7e-3)
+COMPONENT = dataclasses.replace(wing_mesh.COMPONENT, root_margin=7e-3)
 
 
 class text_dict:
@@ -101,7 +103,8 @@ def main(argv=None):
                                dict(name="body",
                                     post=["sphereMesh.py", "-map"]),
                                dict(name="background")],
-                   level=args.level, levelParameters=m.lev,
+                   level=args.level,
+                   levelParameters=file_entries(m.lev),
                    pose=dict(phiDeg=args.phi, alphaDeg=args.alpha),
                    thetaMaxDeg=math.degrees(THETA_MAX),
                    wing=m.winfo, body=sinfo, background=m.binfo)
@@ -109,8 +112,8 @@ def main(argv=None):
         args.output, summary,
         "meshGen: level %s: wing %d cells, body %d cells, background "
         "%d^3 cells refined %d times (h = %.3g m)"
-        % (args.level, m.winfo["cellsPlanned"], sinfo["cells"], m.lev["N0"],
-           m.lev["nRef"], m.binfo["h"]))
+        % (args.level, m.winfo["cellsPlanned"], sinfo["cells"], m.lev.n0,
+           m.lev.n_ref, m.binfo["h"]))
 
 
 if __name__ == "__main__":

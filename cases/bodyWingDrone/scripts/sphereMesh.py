@@ -29,21 +29,30 @@ import argparse
 import math
 import os
 import sys
+from dataclasses import dataclass
 
 CBAR = 0.015                # mean chord [m] (docs/paper.md, Table 1)
 R1 = CBAR                   # body radius: one chord
 MARGIN = 0.8*CBAR           # body -> overset boundary, as the wing's [m]
 
-# n: cells along a cube edge (4 n around a great circle); nR: radial cells;
-# dsW: first cell at the body surface [m].  Fewer cells at tiny (n = 6,
+# n: cells along a cube edge (4 n around a great circle); n_r: radial cells;
+# ds_w: first cell at the body surface [m].  Fewer cells at tiny (n = 6,
 # or n = 10 with nR = 10) failed a whole cycle of Allrun -motionOnly:
 # README.md, "Whole cycles"
+@dataclass(frozen=True)
+class SphereLevel:
+    """A level of the body component (n, nR, dsW in meshGen.json)."""
+    n: int
+    n_r: int
+    ds_w: float
+
+
 LEVELS = {
-    "tiny":     dict(n=14, nR=12, dsW=0.6e-3),
-    "coarse":   dict(n=14, nR=14, dsW=0.35e-3),
-    "medium":   dict(n=20, nR=18, dsW=0.25e-3),
-    "fine":     dict(n=28, nR=24, dsW=0.17e-3),
-    "finePlus": dict(n=34, nR=28, dsW=0.14e-3),
+    "tiny":     SphereLevel(n=14, n_r=12, ds_w=0.6e-3),
+    "coarse":   SphereLevel(n=14, n_r=14, ds_w=0.35e-3),
+    "medium":   SphereLevel(n=20, n_r=18, ds_w=0.25e-3),
+    "fine":     SphereLevel(n=28, n_r=24, ds_w=0.17e-3),
+    "finePlus": SphereLevel(n=34, n_r=28, ds_w=0.14e-3),
 }
 
 
@@ -72,7 +81,7 @@ def block_mesh_dict(level):
     from the origin), graded along the rays, and the level's parameters;
     mapPoints() then puts it onto the spheres."""
     lev = LEVELS[level]
-    n, n_r, ds_w = lev["n"], lev["nR"], lev["dsW"]
+    n, n_r, ds_w = lev.n, lev.n_r, lev.ds_w
     R2 = R1 + MARGIN
     # radial grading from the wall: the block's third direction runs from
     # the outer to the inner cube, so its ratio last/first is the inverse
@@ -196,7 +205,8 @@ def main():
         return 0
     if a.list or not a.level:
         for k, v in LEVELS.items():
-            print("%-9s %s cells %d" % (k, v, 6*v["n"]**2*v["nR"]))
+            print("%-9s n %d nR %d dsW %g cells %d"
+                  % (k, v.n, v.n_r, v.ds_w, 6*v.n**2*v.n_r))
         return 0
     if a.level not in LEVELS:
         sys.exit("sphereMesh.py: level %s: one of %s"

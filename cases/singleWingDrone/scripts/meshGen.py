@@ -62,6 +62,7 @@ import sys
 from flapfoam.mesh import mesh_gen
 from flapfoam.models import wing_geometry as geo
 from flapfoam.mesh.background_mesh import BACKGROUND
+from flapfoam.mesh.parameters import file_entries
 from flapfoam.mesh.wing_mesh import COMPONENT, LEVELS
 
 
@@ -83,18 +84,19 @@ def main(argv=None):
     # components in merge order (bin/tools/makeOversetMesh): the wing is the
     # master, so that its overset patch becomes the first patch
     summary = dict(components=[dict(name="wing"), dict(name="background")],
-                   level=args.level, levelParameters=m.lev,
+                   level=args.level,
+                   levelParameters=file_entries(m.lev),
                    pose=dict(phiDeg=args.phi, alphaDeg=args.alpha),
                    geometry=geo.summary(),
-                   component=m.comp,
+                   component=file_entries(m.comp),
                    wing=m.winfo, background=m.binfo,
-                   backgroundParameters={k: v for k, v in BACKGROUND.items()})
+                   backgroundParameters=file_entries(BACKGROUND))
     return mesh_gen.finish(
         args.output, summary,
         "meshGen: level %s: wing %d cells in %d blocks, background "
         "%d^3 cells refined %d times (h = %.3g m)"
         % (args.level, m.winfo["cellsPlanned"], m.winfo["blocks"],
-           m.lev["N0"], m.lev["nRef"], m.binfo["h"]))
+           m.lev.n0, m.lev.n_ref, m.binfo["h"]))
 
 
 if __name__ == "__main__":

@@ -8,6 +8,7 @@ volume the components sweep (wingMesh.sweptEnvelope).  numpy only.
 """
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -16,25 +17,31 @@ from flapfoam.mesh.block_mesh import BlockMesh, FOAM_FOOTER, FOAM_HEADER
 
 # --------------------------------------------------------------------------
 # Background and motion envelope
-BACKGROUND = dict(
-    side=20*geo.CBAR,       # cube side [m]
-    centre=(0.0, 0.0, 0.0),
-    phiMax=math.radians(75),    # A_phi
-    alphaMax=math.radians(45),  # A_alpha
-    nBuffer=2,              # cells of each level between refinement
+@dataclass(frozen=True)
+class Background:
+    """The background cube and the motion envelope it is refined around."""
+    side: float             # cube side [m]
+    centre: tuple
+    phi_max: float          # A_phi
+    alpha_max: float        # A_alpha
+    n_buffer: int           # cells of each level between refinement
                             # regions (a level may set its own)
-    finalMargin=1,          # cells of size h beyond the swept component
-)
+    final_margin: int       # cells of size h beyond the swept component
+
+
+BACKGROUND = Background(side=20*geo.CBAR, centre=(0.0, 0.0, 0.0),
+                        phi_max=math.radians(75), alpha_max=math.radians(45),
+                        n_buffer=2, final_margin=1)
 
 
 def background_cell_size(lev, bg):
-    return bg["side"]/(lev["N0"]*2**lev["nRef"])
+    return bg.side/(lev.n0*2**lev.n_ref)
 
 
 def background_block_mesh(lev, bg, env):
-    side = bg["side"]
-    c = np.asarray(bg["centre"], dtype=float)
-    N0, n_ref = lev["N0"], lev["nRef"]
+    side = bg.side
+    c = np.asarray(bg.centre, dtype=float)
+    N0, n_ref = lev.n0, lev.n_ref
     h0 = side/N0
     bm = BlockMesh()
     verts = []
@@ -56,10 +63,10 @@ def background_block_mesh(lev, bg, env):
     margins = [0.0]*(n_ref + 1)
     # a cell is selected when its centre is in the region: half a cell of
     # the pass's input size added to each margin
-    m = bg["finalMargin"]*h[n_ref] + 0.5*h[n_ref - 1]
+    m = bg.final_margin*h[n_ref] + 0.5*h[n_ref - 1]
     margins[n_ref] = m
     for j in range(n_ref - 1, 0, -1):
-        m = m + lev.get("nBuffer", bg["nBuffer"])*h[j] \
+        m = m + (bg.n_buffer if lev.n_buffer is None else lev.n_buffer)*h[j] \
             + 0.5*h[j - 1]
         margins[j] = m
     regions = []

@@ -62,8 +62,8 @@ class LevelMeshes:
     """A level's meshes: its parameters (lev), the component's (comp), the
     wing component's block mesh and summary (wbm, winfo), the
     background's (bbm, binfo)."""
-    lev: dict
-    comp: dict
+    lev: object     # wing_mesh.MeshLevel
+    comp: object    # wing_mesh.Component
     wbm: object
     winfo: dict
     bbm: object
@@ -94,7 +94,7 @@ def write_wing_and_background(out, hdr, drone, m, extra_actions=None):
     write_case(os.path.join(out, "wing"), m.wbm,
               hdr + "// %s: wing component (O-type, overset)\n\n" % drone)
     extra = {"topoSetDict.refine%d" % (j + 1):
-             topo_set_refine(r, BACKGROUND["centre"],
+             topo_set_refine(r, BACKGROUND.centre,
                            extra_actions(j, r) if extra_actions else ())
              for j, r in enumerate(m.binfo["regions"])}
     write_case(os.path.join(out, "background"), m.bbm,

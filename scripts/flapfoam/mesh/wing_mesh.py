@@ -8,7 +8,9 @@ topology, the planform curves, the blocks, and the envelope it sweeps over
 the stroke.  numpy only.
 """
 
+import dataclasses
 import math
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -18,45 +20,72 @@ from flapfoam.mesh.block_mesh import (BlockMesh, n_cells_growth, sizes_geometric
 
 
 # --------------------------------------------------------------------------
-# Resolution levels
+# Resolution levels (in meshGen.json and the docs by their camelCase names:
+# nS, nL, nC, nT, dsE, q, N0, nRef, nBuffer, margin)
 #
-# nS, nL, nC : cells along the span, across each edge strip (leading/trailing
-#              edge side of the planform) and across the core (chordwise)
-# nT         : cells across the plate thickness (wing level), ds_z = t/nT
-# dsE        : first cell size at the plate edge (in-plane) [m]
+# n_s, n_l, n_c : cells along the span, across each edge strip
+#              (leading/trailing edge side of the planform) and across the
+#              core (chordwise)
+# n_t        : cells across the plate thickness (wing level), ds_z = t/n_t
+# ds_e       : first cell size at the plate edge (in-plane) [m]
 # q          : maximum growth ratio of the cell sizes away from the plate
-# N0, nRef   : background base cells per cube side, refinement passes:
-#              h = 20 cbar/(N0 2^nRef) along the wing path; the component's
+# n0, n_ref  : background base cells per cube side, refinement passes:
+#              h = 20 cbar/(n0 2^n_ref) along the wing path; the component's
 #              cells grow to (at most) h at its overset boundary
+# n_buffer   : (optional) the background's cells between refinement regions
+#              instead of BACKGROUND's
 # margin     : (optional) the component's margin instead of COMPONENT's
 #              (tiny: 1.0 cbar; with 0.8 cbar tiny failed a whole cycle of
 #              Allrun -motionOnly; cases/bodyWingDrone/README.md, "Whole
 #              cycles")
 # --------------------------------------------------------------------------
+@dataclass(frozen=True)
+class MeshLevel:
+    """A resolution level (the names above; margin and n_buffer None: the
+    component's and the background's own)."""
+    n_s: int
+    n_l: int
+    n_c: int
+    n_t: int
+    ds_e: float
+    q: float
+    n0: int = field(metadata={"key": "N0"})
+    n_ref: int
+    n_buffer: int = None
+    margin: float = None
+
+
 LEVELS = {
-    "tiny":     dict(nS=12, nL=3, nC=3, nT=2, dsE=0.7e-3, q=1.4,
-                     N0=16, nRef=2, nBuffer=1, margin=1.0*geo.CBAR),
-    "coarse":   dict(nS=24, nL=5, nC=5, nT=2, dsE=0.4e-3, q=1.25,
-                     N0=12, nRef=3),
-    "medium":   dict(nS=32, nL=7, nC=7, nT=3, dsE=0.3e-3, q=1.2,
-                     N0=19, nRef=3),
-    "fine":     dict(nS=44, nL=9, nC=9, nT=4, dsE=0.2e-3, q=1.16,
-                     N0=26, nRef=3),
-    "finePlus": dict(nS=52, nL=11, nC=11, nT=5, dsE=0.16e-3, q=1.14,
-                     N0=31, nRef=3),
+    "tiny":     MeshLevel(n_s=12, n_l=3, n_c=3, n_t=2, ds_e=0.7e-3, q=1.4,
+                          n0=16, n_ref=2, n_buffer=1, margin=1.0*geo.CBAR),
+    "coarse":   MeshLevel(n_s=24, n_l=5, n_c=5, n_t=2, ds_e=0.4e-3, q=1.25,
+                          n0=12, n_ref=3),
+    "medium":   MeshLevel(n_s=32, n_l=7, n_c=7, n_t=3, ds_e=0.3e-3, q=1.2,
+                          n0=19, n_ref=3),
+    "fine":     MeshLevel(n_s=44, n_l=9, n_c=9, n_t=4, ds_e=0.2e-3, q=1.16,
+                          n0=26, n_ref=3),
+    "finePlus": MeshLevel(n_s=52, n_l=11, n_c=11, n_t=5, ds_e=0.16e-3,
+                          q=1.14, n0=31, n_ref=3),
 }
 
-# Topology and extent of the wing component
-COMPONENT = dict(
-    margin=0.8*geo.CBAR,    # distance plate -> overset boundary [m]
-    tau2=math.radians(68),  # tip-block corners P1/P2 at tau2, pi - tau2
-    coreFrac=0.45,          # core half width = coreFrac*c(r)/2
-    diagBlend=0.6,          # direction P1 -> Q2: blend of the inward normal
-                            # at P1 (1) and -y (0), balances the corner angles
-    spanFirst=1.5,          # spanwise cells at the root and the tip block:
-                            # spanFirst*dsE
-    nPoly=120,              # points per polyLine edge
-)
+
+@dataclass(frozen=True)
+class Component:
+    """Topology and extent of the wing component."""
+    margin: float           # distance plate -> overset boundary [m]
+    tau2: float             # tip-block corners P1/P2 at tau2, pi - tau2
+    core_frac: float        # core half width = core_frac*c(r)/2
+    diag_blend: float       # direction P1 -> Q2: blend of the inward normal
+                            # at P1 (1) and -y (0), balances the corners
+    span_first: float       # spanwise cells at the root and the tip block:
+                            # span_first*ds_e
+    n_poly: int             # points per polyLine edge
+    root_margin: float = None   # the root side's margin (None: margin)
+
+
+COMPONENT = Component(margin=0.8*geo.CBAR, tau2=math.radians(68),
+                      core_frac=0.45, diag_blend=0.6, span_first=1.5,
+                      n_poly=120)
 
 # --------------------------------------------------------------------------
 # Planform curves (x, y) sampled by arc length
@@ -110,19 +139,20 @@ def core_curve(f, y1, n=4000):
 
 def level_component(comp, lev):
     """The component's parameters at a level (its own margin, if any)"""
-    return dict(comp, margin=lev.get("margin", comp["margin"]))
+    return comp if lev.margin is None else \
+        dataclasses.replace(comp, margin=lev.margin)
 
 
 def wing_planform(comp):
     """Planform points (x, y) and curves of the wing component."""
     a, R0 = geo.A, geo.R0
-    d = comp["margin"]
+    d = comp.margin
     # root side (towards the flapping axis): its own margin if given (the
     # body-wing drone keeps the component outside the body); the root
     # corners are then quarter ellipses
-    dr = comp.get("rootMargin") or d
-    f = comp["coreFrac"]
-    tau2 = comp["tau2"]
+    dr = comp.root_margin or d
+    f = comp.core_frac
+    tau2 = comp.tau2
 
     P = {}
     P["E0"] = geo.edge_point(math.pi)
@@ -135,7 +165,7 @@ def wing_planform(comp):
     # Q2 on the core curve x = f c(r)/2, inwards from P1 along a blend of
     # the inward normal and -y
     n1 = geo.edge_normal(tau2)
-    w = comp["diagBlend"]
+    w = comp.diag_blend
     dvec = w*n1 + (1 - w)*np.array([0.0, 1.0])
     dvec /= np.linalg.norm(dvec)
     lo, hi = 0.0, np.linalg.norm(P["P1"] - P["Q1"])
@@ -218,10 +248,10 @@ OUTER_SIDE = {"ringL": "x1", "ringTp": "x1", "ringT": "x1",
 def planform_sizes(lev, comp, P, C, h_out):
     """Cell sizes of the planform edges (a, b) -> sizes a -> b, and the
     radial distribution and the top span size dTop."""
-    d = comp["margin"]
-    q = lev["q"]
-    n_s, n_l, n_c = lev["nS"], lev["nL"], lev["nC"]
-    ds_e = lev["dsE"]
+    d = comp.margin
+    q = lev.q
+    n_s, n_l, n_c = lev.n_s, lev.n_l, lev.n_c
+    ds_e = lev.ds_e
     Lp = lambda a, b: planform_length(P, C, a, b)  # noqa: E731
 
     S = {}
@@ -240,7 +270,7 @@ def planform_sizes(lev, comp, P, C, h_out):
     # tip block's cells next to the core (spanFirst*dsE at least: the root
     # and tip cells need not be as fine as the wall-normal spacing)
     d_top = min(S[("P1", "Q2")][-1], S[("P2", "Q3")][-1])
-    d0 = comp["spanFirst"]*ds_e
+    d0 = comp.span_first*ds_e
     for a_, b_ in (("E0", "P2"), ("Q0", "Q3"), ("Q1", "Q2"), ("E5", "P1")):
         S[(a_, b_)] = sizes_geometric(Lp(a_, b_), n_s, d0, max(d_top, d0), q=q)
     # outer edges: same fractions as the inner edge they face
@@ -291,11 +321,11 @@ def add_blocks(bm, V):
 def wing_component(lev, comp, pose=(0.0, 0.0)):
     """BlockMesh of the wing component for level parameters lev."""
     t = geo.THICKNESS
-    d = comp["margin"]
-    q = lev["q"]
-    n_t = lev["nT"]
+    d = comp.margin
+    q = lev.q
+    n_t = lev.n_t
     ds_z = t/n_t
-    ds_e = lev["dsE"]
+    ds_e = lev.ds_e
     h_out = background_cell_size(lev, BACKGROUND)
 
     P, C = wing_planform(comp)
@@ -332,7 +362,7 @@ def wing_component(lev, comp, pose=(0.0, 0.0)):
         for (a_, b_), s in S.items():
             bm.set_sizes(V[(a_, iz)], V[(b_, iz)], s)
         for (a_, b_), pts in C.items():
-            inner = resample(pts, comp["nPoly"])[1:-1]
+            inner = resample(pts, comp.n_poly)[1:-1]
             bm.curved(V[(a_, iz)], V[(b_, iz)],
                       [X(p, z) for p in inner])
     for iz in range(3):
@@ -385,7 +415,7 @@ def component_outline(comp, n_per=200):
         pts.append(resample(C[k], n_per))
     pts.append(line(P["OQ0"], P["OQ1"], 10))
     xy = np.concatenate(pts)
-    H = 0.5*geo.THICKNESS + comp["margin"]
+    H = 0.5*geo.THICKNESS + comp.margin
     return np.concatenate([
         np.column_stack([xy, np.full(len(xy), z)]) for z in (-H, H)])
 
@@ -402,8 +432,8 @@ def swept_envelope(comp, bg, tilts=(0.0,)):
     the half-space y >= yA outside the cylinder r <= rB."""
     base = component_outline(comp)
     pts = []
-    for phi in np.linspace(-bg["phiMax"], bg["phiMax"], 61):
-        for alpha in np.linspace(-bg["alphaMax"], bg["alphaMax"], 19):
+    for phi in np.linspace(-bg.phi_max, bg.phi_max, 61):
+        for alpha in np.linspace(-bg.alpha_max, bg.alpha_max, 19):
             Rz = np.array([[math.cos(phi), -math.sin(phi), 0],
                            [math.sin(phi), math.cos(phi), 0], [0, 0, 1]])
             for tilt in tilts:
