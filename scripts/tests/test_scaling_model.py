@@ -38,14 +38,14 @@ def write(path, text):
 
 def test_report_rows(tmp_path):
     t = rank_tables.read_table(write(tmp_path / "log", REPORT), "x")
-    assert [r["cells"] for r in t["rows"]] == [4, 2]
-    assert t["total"]["remotePairs"] == 3
+    assert [r["cells"] for r in t.rows] == [4, 2]
+    assert t.total["remotePairs"] == 3
 
 
 def test_report_info(tmp_path):
     t = rank_tables.read_table(write(tmp_path / "log", REPORT), "x")
-    assert t["info"]["remotePairShare"] == 0.25
-    assert t["info"]["cells"] == 1.3333
+    assert t.info["remotePairShare"] == 0.25
+    assert t.info["cells"] == 1.3333
 
 
 def test_cell_dist_to_cell_decomposition(tmp_path):
@@ -121,15 +121,13 @@ def costs():
 
 @pytest.fixture
 def table():
-    return {"columns": ["cells", "processorFaces", "oversetWork",
-                        "remotePairs", "acceptors", "pairs"],
-            "rows": [{"cells": 1000, "processorFaces": 50,
-                      "oversetWork": 100, "remotePairs": 10,
-                      "acceptors": 5, "pairs": 40},
-                     {"cells": 800, "processorFaces": 50,
-                      "oversetWork": 300, "remotePairs": 0,
-                      "acceptors": 7, "pairs": 60}],
-            "info": {}}
+    return rank_tables.RankTable(
+        columns=["cells", "processorFaces", "oversetWork", "remotePairs",
+                 "acceptors", "pairs"],
+        rows=[{"cells": 1000, "processorFaces": 50, "oversetWork": 100,
+               "remotePairs": 10, "acceptors": 5, "pairs": 40},
+              {"cells": 800, "processorFaces": 50, "oversetWork": 300,
+               "remotePairs": 0, "acceptors": 7, "pairs": 60}])
 
 
 # overset: rank 1's work 1e-5 B(300, 400) + vParallel + rank 0's traffic
@@ -163,7 +161,7 @@ def test_overset_at_a_pose(costs, table):
     # 1.2 (240) is below the cycle's largest mean, 300
     peaks = []
     for at_pose in (1.8, 1.2):
-        table["info"]["oversetWorkAtPose"] = at_pose
+        table.info["oversetWorkAtPose"] = at_pose
         peaks.append(predict(costs, table)["overset"])
     assert abs(peaks[0] - OVERSET - 1e-5*(bw(360, 400) - bw(300, 400))) \
         < 1e-15
@@ -176,8 +174,8 @@ def test_sweep_values_max_and_pimple_with_remote_donors(costs, table):
     # remote-stencil interfaces (1 rank each): rank 0 G (1e-6 B(1000,
     # 1800) + 100 1e-5 (1 + 1) + 1e-9 2 8 (50 + 8)), rank 1 less
     without = scaling_model.Decomposition(table, [1, 1]).sweep_values_max()
-    table["columns"] += ["remoteDonors", "donorRanks"]
-    for row, donors in zip(table["rows"], (8, 30)):
+    table.columns += ["remoteDonors", "donorRanks"]
+    for row, donors in zip(table.rows, (8, 30)):
         row["remoteDonors"], row["donorRanks"] = donors, 1
     d = scaling_model.Decomposition(table, [1, 1])
     assert d.sweep_values_max() == 80 and np.isnan(without)
@@ -191,9 +189,9 @@ def test_step_of_an_overset_rank_report(costs):
     its step by hand with the counted iterations (110 of I1 100)."""
     names = ["cells", "procFaces", "procPatches", "acceptors", "remoteSlots",
              "received", "recvRanks"]
-    report = {"columns": names, "rows": [
+    report = rank_tables.RankTable(columns=names, rows=[
         dict(zip(names, (600, 40, 1, 10, 12, 5, 1))),
-        dict(zip(names, (500, 40, 1, 20, 30, 9, 1)))], "info": {}}
+        dict(zip(names, (500, 40, 1, 20, 30, 9, 1)))])
     d = scaling_model.Decomposition.from_rank_report(report)
     costs.traffic = None
     step = scaling_model.predict(costs, d, iterations=110)

@@ -4,7 +4,7 @@
 """
 Per-rank tables of a decomposition, for the scaling bench (bench/scaling):
 
-- read_tables(FILE, PREFIX): the tables that lines "PREFIX: ..." of a log
+- read_tables(FILE, PREFIX): the tables (RankTable records) that lines "PREFIX: ..." of a log
   hold, in the format of couplingReport (oversetCouplingsReport,
   oversetGraph) and of oversetRankReport: a header line "rank NAME...",
   one row per rank, rows total/max/mean, and lines of "key value" pairs
@@ -24,6 +24,7 @@ Per-rank tables of a decomposition, for the scaling bench (bench/scaling):
 """
 
 import argparse
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -41,20 +42,29 @@ def _value(word):
         return word
 
 
+@dataclass
+class RankTable:
+    """A per-rank table of a log: its columns, a row per rank (index =
+    rank; {column: value}), the summary rows (total, max, mean: None where
+    absent), the "key value" pairs of its other lines (info: the file's
+    keys) and line, the index in the file of its first line."""
+    columns: list = field(default_factory=list)
+    rows: list = field(default_factory=list)
+    info: dict = field(default_factory=dict)
+    line: int = 0
+    total: dict = None
+    max: dict = None
+    mean: dict = None
+
+
 def read_tables(fname, prefix):
-    """The tables of the lines "PREFIX: ..." of FILE, in order: each a dict
-    with "columns", "rows" (list, index = rank: {column: value}), the
-    summary rows ("total", "max", "mean" where present), the "key value"
-    pairs of its other lines (in "info"; a line of another form, e.g.
-    "48 ranks, 29732 cells, ...", is kept there word by word too) and
-    "line", the index in FILE of its first line.  A line "time ..."
+    """The RankTables of the lines "PREFIX: ..." of FILE, in order (a line
+    of another form than "key value" pairs, e.g. "48 ranks, 29732 cells,
+    ...", is kept in info word by word too).  A line "time ..."
     (oversetRankReport's title) starts a table, and so does a header line
     unless it follows such a title."""
     tables = []
     tag = prefix + ":"
-
-    def start(i):
-        tables.append({"columns": [], "rows": [], "info": {}, "line": i})
 
     with open(fname, errors="replace") as f:
         for i, line in enumerate(f):
@@ -64,35 +74,36 @@ def read_tables(fname, prefix):
             if not words:
                 continue
             if words[0] == "time" or not tables:
-                start(i)
+                tables.append(RankTable(line=i))
             t = tables[-1]
             if words[0] == "rank":
-                if t["columns"] or t["rows"]:
-                    start(i)
-                tables[-1]["columns"] = words[1:]
+                if t.columns or t.rows:
+                    t = RankTable(line=i)
+                    tables.append(t)
+                t.columns = words[1:]
                 continue
-            is_row = (words[0].isdigit() and t["columns"]
-                      and len(words) == len(t["columns"]) + 1)
+            is_row = (words[0].isdigit() and t.columns
+                      and len(words) == len(t.columns) + 1)
             if is_row or words[0] in SUMMARIES:
-                if len(words) != len(t["columns"]) + 1:
+                if len(words) != len(t.columns) + 1:
                     raise ValueError("%s: '%s': %d values for the columns %s"
                                      % (fname, line.strip(), len(words) - 1,
-                                        t["columns"]))
-                row = dict(zip(t["columns"], map(float, words[1:])))
+                                        t.columns))
+                row = dict(zip(t.columns, map(float, words[1:])))
                 if words[0].isdigit():
-                    t["rows"].append(row)
+                    t.rows.append(row)
                 else:
-                    t[words[0]] = row
+                    setattr(t, words[0], row)
             else:
                 pairs = words[1:] if len(words) % 2 else words
-                t["info"].update((k, _value(v))
-                                 for k, v in zip(pairs[::2], pairs[1::2]))
+                t.info.update((k, _value(v))
+                              for k, v in zip(pairs[::2], pairs[1::2]))
     return tables
 
 
 def read_table(fname, prefix):
     """The last table of FILE's lines "PREFIX: ...", or ValueError."""
-    tables = [t for t in read_tables(fname, prefix) if t["rows"]]
+    tables = [t for t in read_tables(fname, prefix) if t.rows]
     if not tables:
         raise ValueError("%s: no table of lines '%s: ...'" % (fname, prefix))
     return tables[-1]
@@ -100,7 +111,7 @@ def read_table(fname, prefix):
 
 def column(table, name):
     """One column of a table's rank rows as an array."""
-    return np.array([row[name] for row in table["rows"]])
+    return np.array([row[name] for row in table.rows])
 
 
 def cell_decomposition(cell_dist, out):

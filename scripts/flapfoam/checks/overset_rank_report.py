@@ -81,14 +81,15 @@ def read_reports(log):
             analyses.append((i, tuple(int(x) for x in m.groups())))
     reports = []
     for t in rank_tables.read_tables(log, PREFIX):
-        info = t["info"]
-        before = [a for i, a in analyses if i < t["line"]]
-        counts = [{k: int(v) for k, v in row.items()} for row in t["rows"]]
+        info = t.info
+        before = [a for i, a in analyses if i < t.line]
+        counts = [{k: int(v) for k, v in row.items()} for row in t.rows]
         reports.append(RankReport(
             time=info.get("time"), stencil=info.get("stencil"),
-            ranks=int(info.get("ranks", 0)), columns=t["columns"],
-            rows=counts, total={k: int(v) for k, v in t["total"].items()},
-            max={k: int(v) for k, v in t["max"].items()}, mean=t["mean"],
+            ranks=int(info.get("ranks", 0)), columns=t.columns,
+            rows=counts,
+            total={k: int(v) for k, v in (t.total or {}).items()},
+            max={k: int(v) for k, v in (t.max or {}).items()}, mean=t.mean,
             cell_imbalance=info.get("cellImbalance"),
             remote_share=info.get("remoteShare"),
             analysis=before[-1] if before else None))

@@ -37,7 +37,7 @@ def counts(fname):
     """What one report gives: the shares and imbalances, processor faces
     (each counted once)."""
     t = rank_tables.read_table(fname, REPORT)
-    total = t["total"]
+    total = t.total
     sampled = max(total["sampledAcceptors"], 1.0)
     work = rank_tables.column(t, "oversetWork")
     cells = rank_tables.column(t, "cells")

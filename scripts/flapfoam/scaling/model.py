@@ -74,6 +74,8 @@ import math
 
 import numpy as np
 
+from flapfoam.bench import rank_tables
+
 STOCK = "inverseDistance"
 OCTREE = "octreeInverseDistance"
 
@@ -200,9 +202,8 @@ class Decomposition:
     processorFaces, neighbours, oversetWork, remotePairs."""
 
     def __init__(self, table, neighbours):
-        self.ranks = len(table["rows"])
-        col = {c: np.array([r[c] for r in table["rows"]])
-               for c in table["columns"]}
+        self.ranks = len(table.rows)
+        col = {c: np.array([r[c] for r in table.rows]) for c in table.columns}
         self.cells = col["cells"]
         self.faces = col["processorFaces"]
         self.work = col["oversetWork"]
@@ -216,7 +217,7 @@ class Decomposition:
         self.remote_donors = col.get("remoteDonors", none)
         self.donor_ranks = col.get("donorRanks", none)
         self.neighbours = np.asarray(neighbours, float)
-        self.info = table["info"]
+        self.info = table.info
 
     @classmethod
     def from_rank_report(cls, report):
@@ -229,9 +230,9 @@ class Decomposition:
                  "oversetWork": r["cells"], "remotePairs": r["remoteSlots"],
                  "acceptors": r["acceptors"], "pairs": r["acceptors"],
                  "remoteDonors": r["received"], "donorRanks": r["recvRanks"]}
-                for r in report["rows"]]
-        table = {"columns": list(rows[0]), "rows": rows, "info": {}}
-        return cls(table, [r["procPatches"] for r in report["rows"]])
+                for r in report.rows]
+        table = rank_tables.RankTable(columns=list(rows[0]), rows=rows)
+        return cls(table, [r["procPatches"] for r in report.rows])
 
     def work_peak(self):
         """The busiest rank's overset work at a step: the work's
@@ -324,12 +325,11 @@ def predict(costs, d, iterations=None):
 
 def serial_decomposition(n_cells, work, pairs):
     """The one-rank 'decomposition' of a mesh (for the serial step)."""
-    table = {"columns": ["cells", "processorFaces", "oversetWork",
-                         "remotePairs", "acceptors", "pairs"],
-             "rows": [{"cells": n_cells, "processorFaces": 0,
-                       "oversetWork": work, "remotePairs": 0,
-                       "acceptors": 0, "pairs": pairs}],
-             "info": {}}
+    table = rank_tables.RankTable(
+        columns=["cells", "processorFaces", "oversetWork", "remotePairs",
+                 "acceptors", "pairs"],
+        rows=[{"cells": n_cells, "processorFaces": 0, "oversetWork": work,
+               "remotePairs": 0, "acceptors": 0, "pairs": pairs}])
     return Decomposition(table, [0])
 
 

@@ -70,7 +70,7 @@ def traffic_table(data):
         e = traffic[(method, p, stencil)]
         b = [s["p2pBytes"] for s in e["perStep"]]
         m = [s["p2pCalls"] for s in e["perStep"]]
-        share = e["report"]["info"].get("remoteShare", float("nan")) \
+        share = e["report"].info.get("remoteShare", float("nan")) \
             if "report" in e else float("nan")
         lines.append("| %s | %d | %s | %.3f | %.3f | %.0f | %.1f %% | %.0f |"
                      % (method, p, SHORT[stencil], max(b)/1e6,
