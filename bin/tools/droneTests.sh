@@ -83,12 +83,9 @@ plots()
         [ -s "$dir/plots/$p.png" ] && n=$((n + 1))
     done
     error="$(grep -o 'max |q - analytic|/amplitude = [^ ]*' "$testRuns/log.plotRun")"
-    if [ "$n" -eq "$#" ]
-    then
-        pass "[$label] plots: $n PNGs in $dir/plots${error:+; $error}"
-    else
-        fail "[$label] plots: $n of $# PNGs (see $testRuns/log.plotRun)"
-    fi
+    [ "$n" -eq "$#" ]
+    verdict $? "[$label] plots: $n PNGs in $dir/plots${error:+; $error}" \
+        "[$label] plots: $n of $# PNGs (see $testRuns/log.plotRun)"
 }
 
 # motionCycle <label> <run folder> [Allrun options...]: the mesh motion
@@ -107,16 +104,9 @@ motionCycle()
     local rc=$?
     local steps
     steps=$(grep -h '^Steps: ' "$dir/log.oversetMotionCheck" 2>/dev/null)
-    if [ "$rc" -eq 0 ] && grep -q '^oversetMotionCheck: OK' "$log"
-    then
-        pass "[$label] the mesh motion to t = $(foamDictionary -entry endTime \
-             -value "$dir/system/controlDict"): $steps" \
-             "($((SECONDS - t0)) s)"
-    else
-        fail "[$label] ./Allrun -motionOnly exited $rc:" \
-             "$(grep -h '^oversetMotionCheck: FAILED' "$log" | head -1)" \
-             "(see $log)"
-    fi
+    [ "$rc" -eq 0 ] && grep -q '^oversetMotionCheck: OK' "$log"
+    verdict $? "[$label] the mesh motion to t = $(foamDictionary -entry endTime -value "$dir/system/controlDict"): $steps" "($((SECONDS - t0)) s)" \
+        "[$label] ./Allrun -motionOnly exited $rc:" "$(grep -h '^oversetMotionCheck: FAILED' "$log" | head -1)" "(see $log)"
 }
 
 # climbed <label> <run folder> <q_0> <q_1> <tol>: the last row of the
@@ -126,17 +116,11 @@ climbed()
     local label="$1" dir="$2" z="$3" x="$4" tol="$5" last
     last=$(tail -n 1 "$dir"/postProcessing/eABAMeshMotion/*/joints.dat \
         2>/dev/null)
-    if awk -v z="$z" -v x="$x" -v tol="$tol" \
+    awk -v z="$z" -v x="$x" -v tol="$tol" \
         '{ exit !(NF > 4 && ($2 - z)^2 <= tol^2 && ($5 - x)^2 <= tol^2) }' \
         <<< "$last"
-    then
-        pass "[$label] at t = ${last%% *} heave and surge within $tol m of" \
-             "$z and $x m"
-    else
-        fail "[$label] the last row of joints.dat, t q_0 ... q_1: " \
-             "$(cut -d' ' -f1-5 <<< "$last") (expected q_0 $z, q_1 $x," \
-             "within $tol)"
-    fi
+    verdict $? "[$label] at t = ${last%% *} heave and surge within $tol m of" "$z and $x m" \
+        "[$label] the last row of joints.dat, t q_0 ... q_1: " "$(cut -d' ' -f1-5 <<< "$last") (expected q_0 $z, q_1 $x," "within $tol)"
 }
 
 # cleanKeepsRuns <label>: the case's Allclean in a scratch copy with a
@@ -150,18 +134,14 @@ cleanKeepsRuns()
         "$copy/runs/coarse" "$copy/runs/ascent" || return
     out=$(cd "$copy" && ./Allclean 2>&1)
     rc=$?
-    if [ "$rc" -eq 0 ] && [ ! -e "$copy/mesh" ] && [ ! -e "$copy/0.0125" ] \
+    [ "$rc" -eq 0 ] && [ ! -e "$copy/mesh" ] && [ ! -e "$copy/0.0125" ] \
         && [ -d "$copy/runs/coarse" ] && [[ "$out" == *"removed mesh 0.0125"* ]] \
         && [[ "$out" == *"kept the runs runs/ascent runs/coarse"* ]] \
         && (cd "$copy" && ./Allclean runs/coarse > /dev/null) \
         && [ ! -e "$copy/runs/coarse" ] && [ -d "$copy/runs/ascent" ] \
         && (cd "$copy" && ./Allclean -runs > /dev/null) && [ ! -e "$copy/runs" ]
-    then
-        pass "[$label] Allclean exits 0, says what it removed, keeps runs/" \
-             "until named or -runs"
-    else
-        fail "[$label] Allclean: exit $rc, '$out' (in $copy)"
-    fi
+    verdict $? "[$label] Allclean exits 0, says what it removed, keeps runs/" "until named or -runs" \
+        "[$label] Allclean: exit $rc, '$out' (in $copy)"
     rm -rf "$copy"
 }
 
@@ -193,22 +173,15 @@ lockedFolder()
              "'$(tail -c 300 <<< "$out")'"
     fi
     echo "Allrun (PID 999999, killed)" > "$dir/Allrun.lock"
-    if ./Allrun -test -case "$dir" > "$testRuns/log.Alltest.$label.stale" 2>&1
-    then
-        pass "[$label] a lock file left by a killed driver: the next run starts"
-    else
-        fail "[$label] a stale lock file stopped Allrun (see" \
-             "$testRuns/log.Alltest.$label.stale)"
-    fi
+    ./Allrun -test -case "$dir" > "$testRuns/log.Alltest.$label.stale" 2>&1
+    verdict $? "[$label] a lock file left by a killed driver: the next run starts" \
+        "[$label] a stale lock file stopped Allrun (see" "$testRuns/log.Alltest.$label.stale)"
     out=$(OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
         timeout 60 mpirun -np 2 ./Allrun -test -case "$dir-mpirun" 2>&1)
-    if [[ "$out" == *"started under MPI (OMPI_COMM_WORLD_SIZE=2): run Allrun once"* ]] \
+    [[ "$out" == *"started under MPI (OMPI_COMM_WORLD_SIZE=2): run Allrun once"* ]] \
         && [ ! -e "$dir-mpirun" ]
-    then
-        pass "[$label] mpirun -np 2 ./Allrun: stops at once, nothing made"
-    else
-        fail "[$label] mpirun -np 2 ./Allrun: '$(tail -c 300 <<< "$out")'"
-    fi
+    verdict $? "[$label] mpirun -np 2 ./Allrun: stops at once, nothing made" \
+        "[$label] mpirun -np 2 ./Allrun: '$(tail -c 300 <<< "$out")'"
 }
 
 # copiedCase [-script NAME] <label> <case folder> <options...>: the case copied
@@ -230,14 +203,9 @@ copiedCase()
         "$FLAPFOAM_PROJECT_DIR" "$copy/$script" "$@" \
         > "$testRuns/log.Alltest.$label" 2>&1
     rc=$?
-    if [ "$rc" -eq 0 ]
-    then
-        pass "[$label] a copy in $copy ran with only etc/bashrc:" \
-             "$script $* ($((SECONDS - t0)) s)"
-    else
-        fail "[$label] the copy's $script $* exited $rc (see" \
-             "$testRuns/log.Alltest.$label)"
-    fi
+    [ "$rc" -eq 0 ]
+    verdict $? "[$label] a copy in $copy ran with only etc/bashrc:" "$script $* ($((SECONDS - t0)) s)" \
+        "[$label] the copy's $script $* exited $rc (see" "$testRuns/log.Alltest.$label)"
     expectRefusal -dir "$copy" "$label environment not set" \
         "source it first" env -i PATH=/usr/bin:/bin "$copy/$script" "$@"
     rm -rf "$copy"
