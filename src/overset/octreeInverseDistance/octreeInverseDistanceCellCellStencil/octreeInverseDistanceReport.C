@@ -180,10 +180,20 @@ void Foam::cellCellStencils::octreeInverseDistance::logStep
     }
     if (Pstream::parRun())
     {
+        label nLocal = 0;
+        for (const labelList& v : patchVoxels_)
+        {
+            nLocal += v.size();
+        }
         Info<< indent << "sent: patch voxels "
             << returnReduce(voxelExchange_.nSent(), sumOp<label>())
             << " donor queries "
-            << returnReduce(nQueriesSent_, sumOp<label>()) << nl;
+            << returnReduce(nQueriesSent_, sumOp<label>()) << nl
+            << indent << "patch voxels per rank (max): own "
+            << returnReduce(nLocal, maxOp<label>())
+            << " scanned against other ranks' boxes "
+            << returnReduce(voxelExchange_.nScanned(), maxOp<label>())
+            << nl;
     }
     Info<< decrIndent << endl;
 }

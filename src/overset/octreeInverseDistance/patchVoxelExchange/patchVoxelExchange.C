@@ -42,6 +42,7 @@ Foam::labelListList Foam::patchVoxelExchange::select
         }
 
         DynamicList<label> sendVoxels;
+        nScanned_ += voxels[zonei].size();
         for (const label v : voxels[zonei])
         {
             treeBoundBox voxelBb(local[zonei].voxelBox(v));
@@ -69,7 +70,8 @@ Foam::labelListList Foam::patchVoxelExchange::select
 Foam::patchVoxelExchange::patchVoxelExchange()
 :
     remote_(),
-    nSent_(0)
+    nSent_(0),
+    nScanned_(0)
 {}
 
 
@@ -79,6 +81,7 @@ void Foam::patchVoxelExchange::clear(const label nZones)
 {
     remote_ = List<patchVoxelMap>(nZones);
     nSent_ = 0;
+    nScanned_ = 0;
 }
 
 
@@ -93,18 +96,44 @@ void Foam::patchVoxelExchange::exchange
 
     // Clear last step's remote voxels, in this step's grids (the ranks
     // share each zone's grid)
-    nSent_ = 0;
+    nScanned_ = 0;
     forAll(remote_, zonei)
     {
         remote_[zonei].reset(local[zonei].bb(), local[zonei].nDivs());
     }
+
+    // One pass over this rank's PATCH voxels against the bounding box of
+    // every rank's boxes of each zone: only these candidates are tested
+    // against each rank's boxes (most voxels, e.g. a far field's, meet no
+    // other zone at all)
+    List<treeBoundBoxList> anyBb(voxels.size());
+    forAll(anyBb, zonei)
+    {
+        treeBoundBox bb(treeBoundBox::invertedBox);
+        forAll(tgtBb, proci)
+        {
+            if (proci != myProci && tgtBb[proci].size())
+            {
+                for (const treeBoundBox& b : tgtBb[proci][zonei])
+                {
+                    bb.add(b);
+                }
+            }
+        }
+        if (!bb.empty())
+        {
+            anyBb[zonei].append(bb);
+        }
+    }
+    const labelListList candidates(select(local, voxels, anyBb));
+    nSent_ = 0;
 
     PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
     for (label proci = 0; proci < Pstream::nProcs(); ++proci)
     {
         if (proci != myProci)
         {
-            const labelListList send(select(local, voxels, tgtBb[proci]));
+            const labelListList send(select(local, candidates, tgtBb[proci]));
             bool any = false;
             for (const labelList& v : send)
             {
