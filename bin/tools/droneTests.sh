@@ -105,8 +105,8 @@ motionCycle()
     local steps
     steps=$(grep -h '^Steps: ' "$dir/log.oversetMotionCheck" 2>/dev/null)
     [ "$rc" -eq 0 ] && grep -q '^oversetMotionCheck: OK' "$log"
-    verdict $? "[$label] the mesh motion to t = $(foamDictionary -entry endTime -value "$dir/system/controlDict"): $steps" "($((SECONDS - t0)) s)" \
-        "[$label] ./Allrun -motionOnly exited $rc:" "$(grep -h '^oversetMotionCheck: FAILED' "$log" | head -1)" "(see $log)"
+    verdict $? "[$label] the mesh motion to t = $(foamDictionary -entry endTime -value "$dir/system/controlDict"): $steps ($((SECONDS - t0)) s)" \
+        "[$label] ./Allrun -motionOnly exited $rc: $(grep -h '^oversetMotionCheck: FAILED' "$log" | head -1) (see $log)"
 }
 
 # climbed <label> <run folder> <q_0> <q_1> <tol>: the last row of the
@@ -119,8 +119,8 @@ climbed()
     awk -v z="$z" -v x="$x" -v tol="$tol" \
         '{ exit !(NF > 4 && ($2 - z)^2 <= tol^2 && ($5 - x)^2 <= tol^2) }' \
         <<< "$last"
-    verdict $? "[$label] at t = ${last%% *} heave and surge within $tol m of" "$z and $x m" \
-        "[$label] the last row of joints.dat, t q_0 ... q_1: " "$(cut -d' ' -f1-5 <<< "$last") (expected q_0 $z, q_1 $x," "within $tol)"
+    verdict $? "[$label] at t = ${last%% *} heave and surge within $tol m of $z and $x m" \
+        "[$label] the last row of joints.dat, t q_0 ... q_1:  $(cut -d' ' -f1-5 <<< "$last") (expected q_0 $z, q_1 $x, within $tol)"
 }
 
 # cleanKeepsRuns <label>: the case's Allclean in a scratch copy with a
@@ -140,7 +140,7 @@ cleanKeepsRuns()
         && (cd "$copy" && ./Allclean runs/coarse > /dev/null) \
         && [ ! -e "$copy/runs/coarse" ] && [ -d "$copy/runs/ascent" ] \
         && (cd "$copy" && ./Allclean -runs > /dev/null) && [ ! -e "$copy/runs" ]
-    verdict $? "[$label] Allclean exits 0, says what it removed, keeps runs/" "until named or -runs" \
+    verdict $? "[$label] Allclean exits 0, says what it removed, keeps runs/ until named or -runs" \
         "[$label] Allclean: exit $rc, '$out' (in $copy)"
     rm -rf "$copy"
 }
@@ -175,7 +175,7 @@ lockedFolder()
     echo "Allrun (PID 999999, killed)" > "$dir/Allrun.lock"
     ./Allrun -test -case "$dir" > "$testRuns/log.Alltest.$label.stale" 2>&1
     verdict $? "[$label] a lock file left by a killed driver: the next run starts" \
-        "[$label] a stale lock file stopped Allrun (see" "$testRuns/log.Alltest.$label.stale)"
+        "[$label] a stale lock file stopped Allrun (see $testRuns/log.Alltest.$label.stale)"
     out=$(OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
         timeout 60 mpirun -np 2 ./Allrun -test -case "$dir-mpirun" 2>&1)
     [[ "$out" == *"started under MPI (OMPI_COMM_WORLD_SIZE=2): run Allrun once"* ]] \
@@ -204,8 +204,8 @@ copiedCase()
         > "$testRuns/log.Alltest.$label" 2>&1
     rc=$?
     [ "$rc" -eq 0 ]
-    verdict $? "[$label] a copy in $copy ran with only etc/bashrc:" "$script $* ($((SECONDS - t0)) s)" \
-        "[$label] the copy's $script $* exited $rc (see" "$testRuns/log.Alltest.$label)"
+    verdict $? "[$label] a copy in $copy ran with only etc/bashrc: $script $* ($((SECONDS - t0)) s)" \
+        "[$label] the copy's $script $* exited $rc (see $testRuns/log.Alltest.$label)"
     expectRefusal -dir "$copy" "$label environment not set" \
         "source it first" env -i PATH=/usr/bin:/bin "$copy/$script" "$@"
     rm -rf "$copy"
