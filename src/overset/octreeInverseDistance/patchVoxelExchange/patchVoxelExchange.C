@@ -58,7 +58,6 @@ Foam::labelListList Foam::patchVoxelExchange::select
                 }
             }
         }
-        nSent_ += sendVoxels.size();
         send[zonei].transfer(sendVoxels);
     }
     return send;
@@ -96,6 +95,7 @@ void Foam::patchVoxelExchange::exchange
 
     // Clear last step's remote voxels, in this step's grids (the ranks
     // share each zone's grid)
+    nSent_ = 0;
     nScanned_ = 0;
     forAll(remote_, zonei)
     {
@@ -126,7 +126,6 @@ void Foam::patchVoxelExchange::exchange
         }
     }
     const labelListList candidates(select(local, voxels, anyBb));
-    nSent_ = 0;
 
     PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
     for (label proci = 0; proci < Pstream::nProcs(); ++proci)
@@ -134,12 +133,13 @@ void Foam::patchVoxelExchange::exchange
         if (proci != myProci)
         {
             const labelListList send(select(local, candidates, tgtBb[proci]));
-            bool any = false;
+            label nSend = 0;
             for (const labelList& v : send)
             {
-                any = any || v.size();
+                nSend += v.size();
             }
-            if (any)
+            nSent_ += nSend;
+            if (nSend)
             {
                 UOPstream os(proci, pBufs);
                 os << send;
