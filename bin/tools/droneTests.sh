@@ -3,9 +3,8 @@
 # flapFoam: shell functions of the drone cases' Alltest scripts (sourced,
 # with the project's check functions, bin/tools/checkFunctions).  Each
 # prints PASS/FAIL lines "PASS [label] ..." (a failure sets status=1):
-# run, motionCycle, climbed, cleanKeepsRuns, lockedFolder, plots,
-# copiedCase, result, flightData, quasiSteady,
-# vacuum.  Needs:
+# runAllrun, scenarios, motionCycle, climbed, cleanKeepsRuns, lockedFolder,
+# plots, copiedCase, result, flightData, quasiSteady, vacuum.  Needs:
 # python (Debian's python3), the case folder as the working directory,
 # testRuns (the folder of the checks' runs and logs, set by the Alltest),
 # checkRun (the single-wing drone's scripts/checkRun.py).
@@ -68,6 +67,21 @@ runAllrun()
     else
         pass "[$label] run completed ($((SECONDS - t0)) s)"
     fi
+}
+
+# scenarios <table> [flapfoam scenarios options...]: the rows of the case's
+# table (flapfoam.checks.scenarios) from the case folder, their logs in
+# $testRuns/log.<row>; its variables testRuns, tight, laminar and builtFrom
+# (the commit Allwmake stamped into the build)
+scenarios()
+{
+    local builtFrom
+    builtFrom=$(sed -n 's/^#define FLAPFOAM_COMMIT "\(.*\)"$/\1/p' \
+        "$FLAPFOAM_PROJECT_DIR/platforms/$WM_OPTIONS/include/flapFoamCommit.H")
+    "$python" -m flapfoam.checks.scenarios "$1" -dir "$testRuns" \
+        -var testRuns="$testRuns" -var "tight=${tight[*]}" \
+        -var "laminar=${laminar[*]}" -var "builtFrom=${builtFrom:-missing}" \
+        "${@:2}" || status=1
 }
 
 # plots <label> <run folder> <PNG names...>: scripts/plotRun.py on the run
