@@ -4,7 +4,8 @@
 """
 bench/scaling's model and reports: the per-rank model of a step (model),
 why one partition costs more (causes), the model against timed runs
-(validate), the tables and charts (summary, report, charts) and a pose's
+(validate) and on sessions held out from its fit (holdout), the tables and
+charts (summary, report, charts) and a pose's
 decomposition bound (bound).  Its tools are flapfoam scaling_<module>.
 """
 
