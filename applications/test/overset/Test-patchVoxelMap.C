@@ -310,6 +310,48 @@ TEST(patchVoxelMap, boxesOfVoxelsAndBlocks)
 }
 
 
+TEST(patchVoxelMap, patchVoxelsByBlock)
+{
+    // The PATCH voxels grouped by block: the same voxels, blocks ascending,
+    // each voxel in its block, the blocks among the map's PATCH blocks
+    const boundBox bb(point(0, 0, 0), point(2, 1, 3));
+    const labelVector n(19, 8, 17);
+    patchVoxelMap map;
+    map.reset(bb, n);
+    Random rnd(5);
+    for (label i = 0; i < 20; ++i)
+    {
+        map.fillPatchFace(randomBox(rnd, 0.2));
+    }
+    const labelList voxels(map.patchVoxels());
+    const patchVoxelMap::blockedVoxels bv(map.patchVoxelBlocks());
+    ASSERT_GT(bv.blocks.size(), 1);
+    ASSERT_EQ(bv.starts.size(), bv.blocks.size() + 1);
+    EXPECT_EQ(bv.starts.first(), 0);
+    EXPECT_EQ(bv.starts.last(), voxels.size());
+
+    labelList sorted(bv.voxels);
+    Foam::sort(sorted);
+    EXPECT_EQ(sorted, voxels);
+
+    const labelVector nB(patchVoxelMap::blockDivisions(n));
+    const labelHashSet patchBlocks(map.blockList());
+    forAll(bv.blocks, i)
+    {
+        if (i > 0)
+        {
+            EXPECT_LT(bv.blocks[i - 1], bv.blocks[i]);
+        }
+        EXPECT_TRUE(patchBlocks.found(bv.blocks[i]));
+        for (label j = bv.starts[i]; j < bv.starts[i + 1]; ++j)
+        {
+            EXPECT_EQ(map.blockOf(bv.voxels[j]), bv.blocks[i]);
+            EXPECT_EQ(bv.blocks[i], flat(nB, blockOf(ijkOf(n, bv.voxels[j]))));
+        }
+    }
+}
+
+
 TEST(patchVoxelMap, emptyAndDegenerate)
 {
     // Never reset: no voxels

@@ -382,7 +382,7 @@ void Foam::cellCellStencils::octreeInverseDistance::fillVoxels()
         }
         if (fill && parallel)
         {
-            patchVoxels_[zonei] = localVoxels_[zonei].patchVoxels();
+            patchVoxels_[zonei] = localVoxels_[zonei].patchVoxelBlocks();
         }
     }
 

@@ -181,9 +181,9 @@ void Foam::cellCellStencils::octreeInverseDistance::logStep
     if (Pstream::parRun())
     {
         label nLocal = 0;
-        for (const labelList& v : patchVoxels_)
+        for (const patchVoxelMap::blockedVoxels& v : patchVoxels_)
         {
-            nLocal += v.size();
+            nLocal += v.voxels.size();
         }
         Info<< indent << "sent: patch voxels "
             << returnReduce(voxelExchange_.nSent(), sumOp<label>())
@@ -191,7 +191,7 @@ void Foam::cellCellStencils::octreeInverseDistance::logStep
             << returnReduce(nQueriesSent_, sumOp<label>()) << nl
             << indent << "patch voxels per rank (max): own "
             << returnReduce(nLocal, maxOp<label>())
-            << " scanned against other ranks' boxes "
+            << " tested one by one against other ranks' boxes "
             << returnReduce(voxelExchange_.nScanned(), maxOp<label>())
             << nl;
     }

@@ -24,7 +24,17 @@ License
 #include "patchVoxelExchange.H"
 #include "PstreamBuffers.H"
 
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::patchVoxelExchange::patchVoxelExchange()
+:
+    remote_(),
+    nSent_(0),
+    nScanned_(0)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::labelListList Foam::patchVoxelExchange::select
 (
@@ -64,17 +74,48 @@ Foam::labelListList Foam::patchVoxelExchange::select
 }
 
 
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+Foam::labelListList Foam::patchVoxelExchange::select
+(
+    const UList<patchVoxelMap>& local,
+    const UList<patchVoxelMap::blockedVoxels>& voxels,
+    const List<treeBoundBoxList>& tgtBb
+)
+{
+    // The voxels of the blocks whose box meets a box, then those tested
+    // one by one
+    labelListList inBlocks(voxels.size());
+    forAll(voxels, zonei)
+    {
+        const patchVoxelMap::blockedVoxels& bv = voxels[zonei];
+        if (bv.voxels.empty() || tgtBb[zonei].empty())
+        {
+            continue;
+        }
 
-Foam::patchVoxelExchange::patchVoxelExchange()
-:
-    remote_(),
-    nSent_(0),
-    nScanned_(0)
-{}
+        DynamicList<label> kept;
+        forAll(bv.blocks, i)
+        {
+            treeBoundBox blockBb(local[zonei].blockBox(bv.blocks[i]));
+            // At least each voxel's inflation in select (1e-6 of its span)
+            blockBb.inflate(1e-6);
 
+            for (const treeBoundBox& bb : tgtBb[zonei])
+            {
+                if (bb.overlaps(blockBb))
+                {
+                    for (label j = bv.starts[i]; j < bv.starts[i + 1]; ++j)
+                    {
+                        kept.append(bv.voxels[j]);
+                    }
+                    break;
+                }
+            }
+        }
+        inBlocks[zonei].transfer(kept);
+    }
+    return select(local, inBlocks, tgtBb);
+}
 
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::patchVoxelExchange::clear(const label nZones)
 {
@@ -87,7 +128,7 @@ void Foam::patchVoxelExchange::clear(const label nZones)
 void Foam::patchVoxelExchange::exchange
 (
     const UList<patchVoxelMap>& local,
-    const labelListList& voxels,
+    const UList<patchVoxelMap::blockedVoxels>& voxels,
     const List<List<treeBoundBoxList>>& tgtBb
 )
 {

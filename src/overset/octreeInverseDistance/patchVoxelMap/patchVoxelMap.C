@@ -24,6 +24,9 @@ License
 #include "patchVoxelMap.H"
 #include "inverseDistanceCellCellStencil.H"
 
+#include <algorithm>
+#include <utility>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 const Foam::label Foam::patchVoxelMap::blockSize(8);
@@ -307,6 +310,44 @@ Foam::labelList Foam::patchVoxelMap::patchVoxels() const
     Foam::sort(result);
     result.setSize(std::unique(result.begin(), result.end()) - result.begin());
     return result;
+}
+
+
+Foam::label Foam::patchVoxelMap::blockOf(const label v) const
+{
+    const labelVector b(voxelOps::index3(nDivs_, v)/blockSize);
+    return voxelOps::index(blockDivisions(nDivs_), b);
+}
+
+
+Foam::patchVoxelMap::blockedVoxels
+Foam::patchVoxelMap::patchVoxelBlocks() const
+{
+    const labelList voxels(patchVoxels());
+    List<std::pair<label, label>> keyed(voxels.size());
+    forAll(voxels, i)
+    {
+        keyed[i] = std::make_pair(blockOf(voxels[i]), voxels[i]);
+    }
+    std::sort(keyed.begin(), keyed.end());
+
+    blockedVoxels out;
+    out.voxels.setSize(keyed.size());
+    DynamicList<label> blocks;
+    DynamicList<label> starts;
+    forAll(keyed, i)
+    {
+        out.voxels[i] = keyed[i].second;
+        if (i == 0 || keyed[i].first != keyed[i - 1].first)
+        {
+            blocks.append(keyed[i].first);
+            starts.append(i);
+        }
+    }
+    starts.append(keyed.size());
+    out.blocks.transfer(blocks);
+    out.starts.transfer(starts);
+    return out;
 }
 
 
