@@ -38,7 +38,7 @@ class HeldOut:
     rows: list
 
     def worst(self):
-        return max(abs(r["ratio"] - 1) for r in self.rows)
+        return validate.largest_errors(self.rows)[None][0]
 
     def median(self):
         return statistics.median(abs(r["ratio"] - 1) for r in self.rows)
@@ -63,24 +63,15 @@ def hold_out(runs, session):
 
 
 def lines(held, markdown=False):
-    """The report of one HeldOut (markdown: a table)."""
+    """The report of one HeldOut: the constants, validate's line per run
+    (markdown: a table), the summary."""
     c = held.calibration
-    out = ["held out %s: fitted on the other sessions: pSat %g, cIter %g, "
-           "growth %g, vParallel %g, bStock %g"
-           % (held.session, c.p_sat, c.c_iter, c.growth, c.v_parallel,
-              c.b_stock), ""]
-    if markdown:
-        out += ["| level | method | np | rounds | measured [s] | model [s] "
-                "| model/measured |", "|---|---|---:|---:|---:|---:|---:|"]
-    for r in held.rows:
-        cells = (r["level"], r["method"], r["ranks"], r["rounds"],
-                 r["measured"], r["model"], r["ratio"],
-                 100*(r["ratio"] - 1))
-        out.append(("| %s | %s | %d | %d | %.3f | %.3f | %.2f (%+.0f %%) |"
-                    if markdown else
-                    "%-7s %-13s np %2d rounds %d measured %.3f model %.3f "
-                    "ratio %.2f (%+.0f %%)") % cells)
-    return out + ["", held.summary(), ""]
+    return ["held out %s: fitted on the other sessions: pSat %g, cIter %g, "
+            "growth %g, vParallel %g, bStock %g"
+            % (held.session, c.p_sat, c.c_iter, c.growth, c.v_parallel,
+               c.b_stock), ""] \
+        + validate.table_lines(held.rows, markdown) \
+        + ["", held.summary(), ""]
 
 
 def main(argv=None):
