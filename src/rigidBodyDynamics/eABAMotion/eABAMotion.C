@@ -25,7 +25,6 @@ License
 #include "mathematicalConstants.H"
 #include "eABASolver.H"
 #include "Time.H"
-#include "IOdictionary.H"
 #include "StringStream.H"
 #include "flightController.H"
 #include "dictionaryKeys.H"
