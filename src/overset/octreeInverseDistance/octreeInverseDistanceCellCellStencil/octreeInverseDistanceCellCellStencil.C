@@ -439,6 +439,8 @@ Foam::cellCellStencils::octreeInverseDistance::octreeInverseDistance
     stencilGlobal_(),
     ws_(),
     nQueriesSent_(0),
+    nQueriesRetried_(0),
+    nQueriesAnswered_(0),
     nHoleTested_(0),
     nDonorSearched_(0),
     nStencilBuilt_(0),

@@ -234,6 +234,8 @@ void Foam::cellCellStencils::octreeInverseDistance::findAllDonors()
     // donors must not be holes of the hole cutting
     ws_.holeTypes = ws_.cellTypes;
     nQueriesSent_ = 0;
+    nQueriesRetried_ = 0;
+    nQueriesAnswered_ = 0;
     nDonorSearched_ = 0;
     if (!ws_.incremental)
     {

@@ -23,8 +23,10 @@ Description
     octreeInverseDistance: what crosses the ranks.  Patch voxels go only to
     the ranks whose parts of other zones they may cut (the boxes here, the
     exchange in Foam::patchVoxelExchange), donor queries only
-    for the cells whose donors matter, through a mapDistribute built from
-    the cached per-rank boxes in the zones' frames.
+    for the cells whose donors matter (Foam::donorQueries): to the rank that
+    held the donor at the previous update alone while its cached box holds
+    the cell, else (or if it no longer holds the cell, in a second exchange)
+    to every rank whose cached box of the zone, in the zone's frame, does.
 
 \*---------------------------------------------------------------------------*/
 
@@ -111,19 +113,42 @@ void Foam::cellCellStencils::octreeInverseDistance::answerQueries
 }
 
 
+void Foam::cellCellStencils::octreeInverseDistance::queryOtherRanks
+(
+    const label celli,
+    const label srci,
+    const label skipProci,
+    donorQueries& q
+) const
+{
+    const point p0(zoneSearch_[srci].toReference(mesh_.cellCentres()[celli]));
+    const labelPair& prev = prevRemote_[srci][celli];
+    forAll(procBb_[srci], proci)
+    {
+        if
+        (
+            proci != Pstream::myProcNo()
+         && proci != skipProci
+         && procBb_[srci][proci].contains(p0)
+        )
+        {
+            const label seed = (prev.first() == proci ? prev.second() : -1);
+            q.add(celli, srci, labelPair(proci, seed), p0, false);
+        }
+    }
+}
+
+
 void Foam::cellCellStencils::octreeInverseDistance::collectRemoteQueries
 (
     const labelUList& cells,
-    remoteQueries& q
+    donorQueries& q
 ) const
 {
     const label nZones = zoneSearch_.size();
-    const label nProcs = Pstream::nProcs();
-    const label myProci = Pstream::myProcNo();
     const labelList& zoneID = this->zoneID();
     const pointField& cc = mesh_.cellCentres();
 
-    List<DynamicList<label>> send(nProcs);
     for (const label celli : cells)
     {
         const label tgti = zoneID[celli];
@@ -141,85 +166,66 @@ void Foam::cellCellStencils::octreeInverseDistance::collectRemoteQueries
                 continue;
             }
 
-            const point p0(zoneSearch_[srci].toReference(cc[celli]));
+            // The rank that held the donor last time, alone, while its box
+            // holds the centre; else every rank whose box holds it
             const labelPair& prev = prevRemote_[srci][celli];
-
-            for (label proci = 0; proci < nProcs; ++proci)
+            const point p0(zoneSearch_[srci].toReference(cc[celli]));
+            if (prev.first() != -1 && procBb_[srci][prev.first()].contains(p0))
             {
-                if (proci != myProci && procBb_[srci][proci].contains(p0))
-                {
-                    send[proci].append(q.cell.size());
-                    q.cell.append(celli);
-                    q.zone.append(srci);
-                    q.proc.append(proci);
-                    q.points.append(p0);
-                    q.seed.append(prev.first() == proci ? prev.second() : -1);
-                }
+                q.add(celli, srci, prev, p0, true);
+            }
+            else
+            {
+                queryOtherRanks(celli, srci, -1, q);
             }
         }
     }
+}
 
-    q.send.setSize(nProcs);
-    forAll(send, proci)
+
+void Foam::cellCellStencils::octreeInverseDistance::collectRetries
+(
+    const donorQueries& asked,
+    const labelUList& found,
+    donorQueries& q
+)
+{
+    forAll(asked.cell, i)
     {
-        q.send[proci].transfer(send[proci]);
+        if (asked.alone[i] && found[i] == -1)
+        {
+            // No longer there: no seed, and no longer first to be asked
+            const label celli = asked.cell[i];
+            const label srci = asked.zone[i];
+            prevRemote_[srci][celli] = labelPair(-1, -1);
+            queryOtherRanks(celli, srci, asked.proc[i], q);
+        }
     }
 }
 
 
-Foam::autoPtr<Foam::mapDistribute>
-Foam::cellCellStencils::octreeInverseDistance::queryMap
+void Foam::cellCellStencils::octreeInverseDistance::exchangeQueries
 (
-    labelListList&& send
+    donorQueries& q,
+    labelList& found
 )
 {
-    labelList recvSizes;
-    Pstream::exchangeSizes(send, recvSizes);
-
-    labelListList constructMap(Pstream::nProcs());
-    label constructSize = 0;
-    forAll(constructMap, proci)
-    {
-        constructMap[proci] = identity(recvSizes[proci], constructSize);
-        constructSize += recvSizes[proci];
-    }
-    return autoPtr<mapDistribute>
-    (
-        new mapDistribute
-        (
-            constructSize,
-            std::move(send),
-            std::move(constructMap)
-        )
-    );
-}
-
-
-void Foam::cellCellStencils::octreeInverseDistance::findRemoteDonors
-(
-    const labelUList& cells
-)
-{
-    // Queries: (cell, donor zone, rank) with the point in the donor zone's
-    // frame (the same transform on every rank) and the walk's seed there
-    remoteQueries q;
-    collectRemoteQueries(cells, q);
-    const label nQueries = q.cell.size();
+    const label nQueries = q.size();
     nQueriesSent_ += nQueries;
 
     // The map: send the queries, answers come back by reverseDistribute
-    const autoPtr<mapDistribute> mapPtr(queryMap(std::move(q.send)));
+    const autoPtr<mapDistribute> mapPtr(q.map());
     const mapDistribute& map = *mapPtr;
 
-    pointField points(std::move(q.points));
+    pointField points(q.points);
     labelList zones(q.zone);
-    labelList seeds(std::move(q.seed));
+    labelList seeds(q.seed);
     map.distribute(points);
     map.distribute(zones);
     map.distribute(seeds);
+    nQueriesAnswered_ += points.size();
 
     labelList donors;
-    labelList found;
     answerQueries(points, zones, seeds, donors, found);
     map.reverseDistribute(nQueries, donors);
     map.reverseDistribute(nQueries, found);
@@ -245,6 +251,30 @@ void Foam::cellCellStencils::octreeInverseDistance::findRemoteDonors
             ws_.stencil[celli][0] = donors[i];
             ws_.donorZone[celli] = srci;
         }
+    }
+}
+
+
+void Foam::cellCellStencils::octreeInverseDistance::findRemoteDonors
+(
+    const labelUList& cells
+)
+{
+    // Queries: (cell, donor zone, rank) with the point in the donor zone's
+    // frame (the same transform on every rank) and the walk's seed there;
+    // first to the rank that held the donor last time
+    donorQueries q(Pstream::nProcs());
+    collectRemoteQueries(cells, q);
+    labelList found;
+    exchangeQueries(q, found);
+
+    // Where that rank no longer holds the cell: the other ranks
+    donorQueries retries(Pstream::nProcs());
+    collectRetries(q, found, retries);
+    nQueriesRetried_ += retries.size();
+    if (returnReduce(retries.size() > 0, orOp<bool>()))
+    {
+        exchangeQueries(retries, found);
     }
 }
 

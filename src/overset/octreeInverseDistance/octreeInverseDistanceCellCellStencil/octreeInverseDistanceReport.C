@@ -188,7 +188,11 @@ void Foam::cellCellStencils::octreeInverseDistance::logStep
         Info<< indent << "sent: patch voxels "
             << returnReduce(voxelExchange_.nSent(), sumOp<label>())
             << " donor queries "
-            << returnReduce(nQueriesSent_, sumOp<label>()) << nl
+            << returnReduce(nQueriesSent_, sumOp<label>())
+            << " (second exchange "
+            << returnReduce(nQueriesRetried_, sumOp<label>()) << ")"
+            << " answered per rank (max) "
+            << returnReduce(nQueriesAnswered_, maxOp<label>()) << nl
             << indent << "patch voxels per rank (max): own "
             << returnReduce(nLocal, maxOp<label>())
             << " tested one by one against other ranks' boxes "
