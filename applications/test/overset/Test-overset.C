@@ -38,7 +38,8 @@ Description
     and the orphan rule of the octreeInverseDistance stencil.  The other
     classes are tested in their own files, linked into the same program
     (flapFoamTest-overset): Test-patchVoxelMap.C,
-    Test-patchVoxelExchange.C, Test-cellBins.C, Test-oversetRankReport.C;
+    Test-patchVoxelExchange.C, Test-cellBins.C, Test-oversetRankReport.C,
+    Test-holeFlood.C;
     the small meshes are in oversetTestMeshes.H.
 
     Every test asserts; the program exits non-zero on failure.

@@ -438,6 +438,8 @@ Foam::cellCellStencils::octreeInverseDistance::octreeInverseDistance
     donorGlobal_(),
     stencilGlobal_(),
     ws_(),
+    flood_(mesh),
+    floodCounts_(),
     nQueriesSent_(0),
     nQueriesRetried_(0),
     nQueriesAnswered_(0),

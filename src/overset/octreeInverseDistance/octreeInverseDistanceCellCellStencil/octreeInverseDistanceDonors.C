@@ -278,7 +278,7 @@ void Foam::cellCellStencils::octreeInverseDistance::classifyCells()
     }
 
     // Unreachable regions become holes; fringe layers around the holes
-    findHoles(ws_.globalCells, mesh_, zoneID(), ws_.stencil, ws_.cellTypes);
+    floodCounts_ = flood_.apply(ws_.globalCells, ws_.stencil, ws_.cellTypes);
 
     ws_.floodTypes = ws_.cellTypes;
     walkFrontResolved(!ws_.incremental);

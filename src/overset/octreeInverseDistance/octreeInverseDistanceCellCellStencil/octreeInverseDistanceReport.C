@@ -166,7 +166,10 @@ void Foam::cellCellStencils::octreeInverseDistance::logStep
         << " cells, donor search "
         << returnReduce(nDonorSearched_, sumOp<label>())
         << " cells; stencil checksum " << word(checksumHex(checksum))
-        << nl;
+        << nl
+        << indent << "flood fill: regions " << floodCounts_.regions
+        << " rounds " << floodCounts_.rounds
+        << " holes made " << floodCounts_.holes << nl;
     forAll(zoneSearch_, zonei)
     {
         const zoneDonorSearch& s = zoneSearch_[zonei];
