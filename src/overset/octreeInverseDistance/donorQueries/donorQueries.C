@@ -39,8 +39,7 @@ void Foam::donorQueries::add
     const label celli,
     const label zonei,
     const labelPair& procSeed,
-    const point& p,
-    const bool aloneQuery
+    const point& p
 )
 {
     send_[procSeed.first()].append(cell.size());
@@ -49,7 +48,6 @@ void Foam::donorQueries::add
     proc.append(procSeed.first());
     points.append(p);
     seed.append(procSeed.second());
-    alone.append(aloneQuery);
 }
 
 

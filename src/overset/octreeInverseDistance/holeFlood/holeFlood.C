@@ -188,9 +188,9 @@ Foam::holeFlood::counts Foam::holeFlood::apply
     const boolList blocked(holeBoundaries(cellTypes));
 
     // This rank's regions, no global numbering
-    const regionSplit regions(mesh_, blocked, false);
-    cellRegion_ = regions;
+    regionSplit regions(mesh_, blocked, false);
     status_.setSize(regions.nLocalRegions());
+    cellRegion_.transfer(regions);
     status_ = NONE;
     localStatus(blocked, cellTypes);
 

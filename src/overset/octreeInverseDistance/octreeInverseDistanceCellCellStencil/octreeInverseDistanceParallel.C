@@ -117,12 +117,12 @@ void Foam::cellCellStencils::octreeInverseDistance::queryOtherRanks
 (
     const label celli,
     const label srci,
+    const point& p0,
     const label skipProci,
     donorQueries& q
 ) const
 {
-    const point p0(zoneSearch_[srci].toReference(mesh_.cellCentres()[celli]));
-    const labelPair& prev = prevRemote_[srci][celli];
+    // No seed: a rank that found the cell last time is asked alone
     forAll(procBb_[srci], proci)
     {
         if
@@ -132,8 +132,7 @@ void Foam::cellCellStencils::octreeInverseDistance::queryOtherRanks
          && procBb_[srci][proci].contains(p0)
         )
         {
-            const label seed = (prev.first() == proci ? prev.second() : -1);
-            q.add(celli, srci, labelPair(proci, seed), p0, false);
+            q.add(celli, srci, labelPair(proci, -1), p0);
         }
     }
 }
@@ -172,11 +171,11 @@ void Foam::cellCellStencils::octreeInverseDistance::collectRemoteQueries
             const point p0(zoneSearch_[srci].toReference(cc[celli]));
             if (prev.first() != -1 && procBb_[srci][prev.first()].contains(p0))
             {
-                q.add(celli, srci, prev, p0, true);
+                q.add(celli, srci, prev, p0);
             }
             else
             {
-                queryOtherRanks(celli, srci, -1, q);
+                queryOtherRanks(celli, srci, p0, -1, q);
             }
         }
     }
@@ -190,15 +189,23 @@ void Foam::cellCellStencils::octreeInverseDistance::collectRetries
     donorQueries& q
 )
 {
+    const pointField& cc = mesh_.cellCentres();
     forAll(asked.cell, i)
     {
-        if (asked.alone[i] && found[i] == -1)
+        // Asked alone (with a seed) and no longer there: no longer first
+        if (asked.seed[i] != -1 && found[i] == -1)
         {
-            // No longer there: no seed, and no longer first to be asked
             const label celli = asked.cell[i];
             const label srci = asked.zone[i];
             prevRemote_[srci][celli] = labelPair(-1, -1);
-            queryOtherRanks(celli, srci, asked.proc[i], q);
+            queryOtherRanks
+            (
+                celli,
+                srci,
+                zoneSearch_[srci].toReference(cc[celli]),
+                asked.proc[i],
+                q
+            );
         }
     }
 }
@@ -217,7 +224,7 @@ void Foam::cellCellStencils::octreeInverseDistance::exchangeQueries
     const autoPtr<mapDistribute> mapPtr(q.map());
     const mapDistribute& map = *mapPtr;
 
-    pointField points(q.points);
+    pointField points(std::move(q.points));
     labelList zones(q.zone);
     labelList seeds(q.seed);
     map.distribute(points);
