@@ -213,7 +213,7 @@ Foam::holeFlood::counts Foam::holeFlood::apply
     const mapDistribute map(globalCells, compactSlots, compactMap);
 
     counts c;
-    c.regions = returnReduce(status_.size(), sumOp<label>());
+    c.regions = status_.size();
     do
     {
         ++c.rounds;
@@ -228,7 +228,6 @@ Foam::holeFlood::counts Foam::holeFlood::apply
             ++c.holes;
         }
     }
-    reduce(c.holes, sumOp<label>());
     return c;
 }
 

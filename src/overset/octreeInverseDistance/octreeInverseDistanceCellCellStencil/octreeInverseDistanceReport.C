@@ -167,9 +167,11 @@ void Foam::cellCellStencils::octreeInverseDistance::logStep
         << returnReduce(nDonorSearched_, sumOp<label>())
         << " cells; stencil checksum " << word(checksumHex(checksum))
         << nl
-        << indent << "flood fill: regions " << floodCounts_.regions
+        << indent << "flood fill: regions "
+        << returnReduce(floodCounts_.regions, sumOp<label>())
         << " rounds " << floodCounts_.rounds
-        << " holes made " << floodCounts_.holes << nl;
+        << " holes made "
+        << returnReduce(floodCounts_.holes, sumOp<label>()) << nl;
     forAll(zoneSearch_, zonei)
     {
         const zoneDonorSearch& s = zoneSearch_[zonei];
