@@ -70,7 +70,7 @@ runAllrun()
 }
 
 # scenarios <table> [flapfoam scenarios options...]: the rows of the case's
-# table (flapfoam.checks.scenarios) from the case folder, their logs in
+# table (flapfoam scenarios) from the case folder, their logs in
 # $testRuns/log.<row>; its variables testRuns, tight, laminar and builtFrom
 # (the commit Allwmake stamped into the build)
 scenarios()
@@ -78,7 +78,7 @@ scenarios()
     local builtFrom
     builtFrom=$(sed -n 's/^#define FLAPFOAM_COMMIT "\(.*\)"$/\1/p' \
         "$FLAPFOAM_PROJECT_DIR/platforms/$WM_OPTIONS/include/flapFoamCommit.H")
-    "$python" -m flapfoam.checks.scenarios "$1" -dir "$testRuns" \
+    flapfoam scenarios "$1" -dir "$testRuns" \
         -var testRuns="$testRuns" -var "tight=${tight[*]}" \
         -var "laminar=${laminar[*]}" -var "builtFrom=${builtFrom:-missing}" \
         "${@:2}" || status=1

@@ -1,12 +1,12 @@
 # License
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""flapfoam.checks.doc_commands: the blocks of a page, their markers, rewrites
+"""flapfoam.harness.doc_commands: the blocks of a page, their markers, rewrites
 and runs."""
 
 import pytest
 
-from flapfoam.checks import doc_commands as dc
+from flapfoam.harness import doc_commands as dc
 from flapfoam.errors import FlapFoamError
 
 PAGE = """# A page

@@ -1,7 +1,7 @@
 # License
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""The scenario runner (flapfoam.checks.scenarios): its table read
+"""The scenario runner (flapfoam.harness.scenarios): its table read
 (rows, variables, refusals), and rows run on a small base folder with
 commands of python3.  A bad input: an error exit with the text passes;
 success, a missing text, a signal, a hang and a changed folder fail.  A
@@ -12,8 +12,8 @@ import sys
 
 import pytest
 
-from flapfoam.checks import scenarios
-from flapfoam.checks.scenario_table import read_table
+from flapfoam.harness import scenarios
+from flapfoam.harness.scenario_table import read_table
 from flapfoam.errors import FlapFoamError
 
 PY = sys.executable

@@ -67,7 +67,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from flapfoam.checks import checklist as checks
+from flapfoam.harness import checklist as checks
 
 from flapfoam.io import step_timers
 from flapfoam.io.foam_dict import multibody_coeffs, read_foam_dict, read_state

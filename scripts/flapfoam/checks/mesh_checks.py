@@ -67,7 +67,7 @@ import numpy as np
 
 from flapfoam.io import foam_mesh as fm
 from flapfoam.models import wing_geometry as geo
-from flapfoam.checks.checklist import Checks
+from flapfoam.harness.checklist import Checks
 from flapfoam.io.tables import time_value
 
 TARGETS = {"coarse": 71e3, "medium": 214e3, "fine": 501e3, "finePlus": 808e3}

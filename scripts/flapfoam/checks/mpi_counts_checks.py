@@ -25,7 +25,7 @@ import argparse
 import sys
 
 from flapfoam.io import mpi_counts
-from flapfoam.checks.checklist import Checks
+from flapfoam.harness.checklist import Checks
 from flapfoam.errors import run_tool
 
 # What flapFoamMPICountersProbe sends (its header): rank -> function ->

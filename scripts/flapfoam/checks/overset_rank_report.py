@@ -42,7 +42,7 @@ import sys
 from dataclasses import dataclass
 
 from flapfoam.bench import rank_tables
-from flapfoam.checks.checklist import Checks
+from flapfoam.harness.checklist import Checks
 from flapfoam.errors import run_tool
 
 PREFIX = "oversetRankReport"

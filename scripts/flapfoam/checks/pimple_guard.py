@@ -45,7 +45,7 @@ import numpy as np
 from flapfoam.io import flight_data
 from flapfoam.io import solver_log
 from flapfoam.io import step_timers
-from flapfoam.checks.checklist import report
+from flapfoam.harness.checklist import report
 from flapfoam.io.foam_dict import multibody_coeffs
 from flapfoam.plots.single_wing import coefficients, reference_values
 from flapfoam.errors import FlapFoamError, run_tool

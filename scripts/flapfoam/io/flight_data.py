@@ -50,7 +50,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from flapfoam.checks.checklist import report
+from flapfoam.harness.checklist import report
 from flapfoam.io.tables import time_value
 from flapfoam.errors import run_tool
 

@@ -50,7 +50,7 @@ import tempfile
 import numpy as np
 
 from flapfoam.io import flight_data
-from flapfoam.checks.checklist import report
+from flapfoam.harness.checklist import report
 from flapfoam.io.foam_dict import read_foam_dict
 from flapfoam.errors import run_tool
 

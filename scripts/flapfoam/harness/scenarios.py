@@ -20,7 +20,7 @@ Exit status 1 if a row fails.
     flapfoam scenarios TABLE [-base DIR] [-dir DIR] [-var NAME=VALUE]...
         [-only NAME] [-updateReferences]
 
-The table's format: flapfoam.checks.scenario_table (below).  With -base,
+The table's format: flapfoam.harness.scenario_table (below).  With -base,
 each row runs in DIR/NAME (a copy of the base, removed when a badInput
 passes); without it, in the folder the runner was started in, the output in
 DIR/log.NAME (a scenario of several runs: DIR/log.NAME.1, .2, ...).
@@ -41,9 +41,9 @@ import sys
 import time
 from dataclasses import dataclass
 
-from flapfoam.checks import scenario_table
+from flapfoam.harness import scenario_table
 from flapfoam.checks.check_run import JointsComparison, check_compare
-from flapfoam.checks.scenario_table import read_table
+from flapfoam.harness.scenario_table import read_table
 from flapfoam.errors import FlapFoamError, run_tool
 
 __doc__ += "\n" + scenario_table.__doc__.split("\n", 2)[2]
