@@ -17,8 +17,8 @@ list reads the modules' sources, so it needs none of their dependencies.
 """
 
 import ast
+import importlib.util
 import os
-import runpy
 import sys
 
 
@@ -73,6 +73,23 @@ def usage(out):
         out.write("  %-24s %s\n" % (name, doc))
 
 
+def run(module, argv):
+    """Run the tool's module as python -m runs it (its own __main__ in
+    sys.modules while it runs), with sys.argv = argv: argv[0] "flapfoam
+    TOOL" is the prog its argparse usage names (runpy would put the module's
+    file name there)."""
+    spec = importlib.util.find_spec(module)
+    code = spec.loader.get_code(module)
+    tool = importlib.util.module_from_spec(spec)
+    tool.__name__ = "__main__"
+    saved = sys.modules["__main__"], sys.argv
+    sys.modules["__main__"], sys.argv = tool, list(argv)
+    try:
+        exec(code, tool.__dict__)
+    finally:
+        sys.modules["__main__"], sys.argv = saved
+
+
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else argv
     if not argv or argv[0] in ("-h", "-help", "--help"):
@@ -84,8 +101,7 @@ def main(argv=None):
         sys.stderr.write("flapfoam: no tool '%s' (flapfoam -help lists them)"
                          "\n" % name)
         return 2
-    sys.argv = ["flapfoam " + name] + argv[1:]
-    runpy.run_module(found[name][0], run_name="__main__", alter_sys=True)
+    run(found[name][0], ["flapfoam " + name] + argv[1:])
     return 0
 
 
