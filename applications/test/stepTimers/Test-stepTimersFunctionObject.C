@@ -22,14 +22,16 @@ License
 Description
     GoogleTest unit tests of the stepTimers function object on a plain time
     loop, no mesh (flapFoamTest-stepTimers): the header and columns of
-    stepTimers.dat, rbd + overset + pimple within 5 % of total in every
-    step (and with preUpdate equal to it), a part first used later adds a
-    header line, pimple = total without the mesh update stamps, the summary
-    file, the per-rank file (its own means: rbd + overset + pimple +
-    preUpdate within 5 % of total), a bad value, an unknown key.  The
+    stepTimers.dat, every column of every step as timed, rbd + overset +
+    pimple + preUpdate = total and the laps (pimpleMomentum,
+    pimpleTurbulence, pimpleSync) = pimple in every step, a part first used
+    later adds a header line, pimple = total and no pimpleSync without the
+    mesh update stamps and laps, the summary file, the per-rank file (its
+    own means, adding up likewise), a bad value, an unknown key.  The
     registry: Test-stepTimersRegistry.C.
 
-    Sleeps are timed against loose upper bounds: the machine may be shared.
+    The timers read a manual clock (stepTimersTestHelpers.H): the values
+    are exact but for the files' 6 significant digits.
 
 \*---------------------------------------------------------------------------*/
 
@@ -42,32 +44,44 @@ Description
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
 using namespace Foam;
 using namespace Foam::stepTimersTest;
 
+//- What the files' 6 significant digits keep of a value v
+inline double written(const double v)
+{
+    return 1e-6*std::abs(v) + roundOff;
+}
+
 // * * * * * * * * * * * * * * Function object  * * * * * * * * * * * * * * //
 
 //- A run of nSteps steps timed as a solver times them (the parts
 //- registered before the first step as timedOversetFvMesh does, the rbd
-//- scope inside oversetMovePoints, oversetLate from lateStep on), with the
-//- seconds slept in each step's scopes
+//- scope inside oversetMovePoints, oversetLate from lateStep on, the laps
+//- of the fvOption pimpleTimers), on the manual clock: per step 1 ms
+//- before the update, 3 ms oversetMovePoints, 2 ms rbd, 1 ms oversetLate,
+//- 2 ms pimpleMomentum, 3 ms pimpleTurbulence
 struct timedSteps
 {
     static constexpr label nSteps = 6;
     static constexpr label nStartup = 1;
     static constexpr label lateStep = 4;   // first step of oversetLate
 
+    //- The timers' clock (before the case: every reading is manual)
+    manualClock clock;
+
     //- The scratch case (removed with the object)
     scratchTime runTimePtr;
 
-    std::vector<scalar> sleptRbd, sleptMovePoints, sleptLate;
     fileName dir;
 
     timedSteps()
     :
+        clock(),
         runTimePtr
         (
             "flapFoamTest-stepTimers", nSteps, 1,
@@ -80,27 +94,28 @@ struct timedSteps
 
         while (runTime.loop())
         {
-            // Solver work before the mesh update
-            sleepMs(1);
+            clock.advance(1);                   // before the mesh update
             timers.stamp(stepTimers::meshUpdateStart);
             {
                 stepTimers::scope t(timers, "oversetMovePoints");
-                sleptMovePoints.push_back(sleepMs(3));
+                clock.advance(3);
                 {
                     stepTimers::scope t(timers, "rbd");
-                    sleptRbd.push_back(sleepMs(2));
+                    clock.advance(2);
                 }
             }
-            sleptLate.push_back(0);
             if (runTime.timeIndex() >= lateStep)
             {
                 stepTimers::scope t(timers, "oversetLate");
-                sleptLate.back() = sleepMs(1);
+                clock.advance(1);
             }
             timers.stamp(stepTimers::meshUpdated);
 
-            // PIMPLE
-            sleepMs(5);
+            // PIMPLE, split by laps
+            clock.advance(2);
+            timers.lap("pimpleMomentum");
+            timers.trailingLap("pimpleTurbulence");
+            clock.advance(3);
         }
         dir = outputDir(runTime);
     }
@@ -108,42 +123,53 @@ struct timedSteps
 
 
 //- The checks of row i of a timedSteps run's stepTimers.dat
-void checkRow(const datFile& dat, const timedSteps& run, const size_t i)
+void checkRow(const datFile& dat, const size_t i)
 {
     SCOPED_TRACE("row " + std::to_string(i));
     const bool late = label(i) + 1 >= timedSteps::lateStep;
+    const double lateSeconds = late ? 0.001 : 0;
 
     EXPECT_EQ(dat.headerOfRow[i], late ? 1u : 0u);
     EXPECT_DOUBLE_EQ(dat(i, "time"), i + 1);
 
-    EXPECT_GE(dat(i, "rbd"), 0.002);
-    EXPECT_LT(dat(i, "rbd"), run.sleptRbd[i] + margin);
-    EXPECT_GE(dat(i, "oversetMovePoints"), 0.003);
-    EXPECT_LT(dat(i, "oversetMovePoints"), run.sleptMovePoints[i] + margin);
-    // Exact but for the file's 6 significant digits
-    EXPECT_NEAR
-    (
-        dat(i, "overset"),
-        dat(i, "oversetMovePoints") + (late ? dat(i, "oversetLate") : 0),
-        2e-6*dat(i, "overset")
-    );
+    const std::vector<std::pair<std::string, double>> expected
+    {
+        {"rbd", 0.002},
+        {"oversetMovePoints", 0.003},
+        {"overset", 0.003 + lateSeconds},
+        {"pimpleMomentum", 0.002},
+        {"pimpleTurbulence", 0.003},
+        {"pimpleSync", 0},
+        {"pimple", 0.005},
+        {"preUpdate", 0.001},
+        {"total", 0.011 + lateSeconds}
+    };
+    for (const auto& column : expected)
+    {
+        EXPECT_NEAR(dat(i, column.first), column.second, written(column.second))
+            << column.first;
+    }
     if (late)
     {
-        EXPECT_GE(dat(i, "oversetLate"), 0.001);
+        EXPECT_NEAR(dat(i, "oversetLate"), 0.001, written(0.001));
     }
-    EXPECT_GE(dat(i, "pimple"), 0.005);
-    EXPECT_GE(dat(i, "preUpdate"), 0.001);
 
-    const double sum = dat(i, "rbd") + dat(i, "overset") + dat(i, "pimple");
-    EXPECT_LE(sum, dat(i, "total"));
-    // The loop's deliberate pre-update sleep (preUpdate) belongs to none of
-    // the three; on a busy machine it oversleeps
+    // The identities the columns hold by construction
+    const double total = dat(i, "total");
     EXPECT_NEAR
     (
-        sum, dat(i, "total"), 0.05*dat(i, "total") + dat(i, "preUpdate") + 0.001
+        dat(i, "rbd") + dat(i, "overset") + dat(i, "pimple")
+      + dat(i, "preUpdate"),
+        total,
+        4*written(total)
     );
-    // With preUpdate the step is covered but for the loop's own overhead
-    EXPECT_NEAR(sum + dat(i, "preUpdate"), dat(i, "total"), 2e-3);
+    EXPECT_NEAR
+    (
+        dat(i, "pimpleMomentum") + dat(i, "pimpleTurbulence")
+      + dat(i, "pimpleSync"),
+        dat(i, "pimple"),
+        3*written(dat(i, "pimple"))
+    );
 }
 
 
@@ -158,7 +184,8 @@ TEST(stepTimersFunctionObject, headersAndRows)
     const std::vector<std::string> first
     {
         "time", "rbd", "overset", "pimple", "total", "preUpdate",
-        "oversetMovePoints"
+        "oversetMovePoints", "pimpleMomentum", "pimpleTurbulence",
+        "pimpleSync"
     };
     EXPECT_EQ(dat.headers[0], first);
     std::vector<std::string> second(first);
@@ -168,7 +195,7 @@ TEST(stepTimersFunctionObject, headersAndRows)
     ASSERT_EQ(dat.rows.size(), size_t(timedSteps::nSteps));
     for (size_t i = 0; i < dat.rows.size(); ++i)
     {
-        checkRow(dat, run, i);
+        checkRow(dat, i);
     }
 
     // Reset after each step
@@ -178,51 +205,56 @@ TEST(stepTimersFunctionObject, headersAndRows)
 }
 
 
+//- The summary file's rows {name: words} and its "# nSteps" count
+std::map<std::string, std::vector<std::string>> summaryRows
+(
+    const fileName& file,
+    label& nSteps
+)
+{
+    std::map<std::string, std::vector<std::string>> rows;
+    nSteps = -1;
+    for (const std::string& line : readLines(file))
+    {
+        const std::vector<std::string> w = split(line);
+        if (w.size() >= 3 && w[0] == "#" && w[1] == "nSteps")
+        {
+            nSteps = std::stoi(w[2]);
+        }
+        else if (w.size() == 4 && w[0] != "#")
+        {
+            rows[w[0]] = w;
+        }
+    }
+    return rows;
+}
+
+
 TEST(stepTimersFunctionObject, summary)
 {
     const timedSteps run;
     const label nSteps = timedSteps::nSteps;
     const label nStartup = timedSteps::nStartup;
+    const label nSummarised = nSteps - nStartup;
+    const label nLate = nSteps - timedSteps::lateStep + 1;
 
     // Steps after the start-up, total's share 1
     ASSERT_TRUE(isFile(run.dir/"stepTimersSummary.dat"));
-    bool foundSteps = false;
-    bool foundTotal = false;
-    for (const std::string& line : readLines(run.dir/"stepTimersSummary.dat"))
-    {
-        const std::vector<std::string> w = split(line);
-        if (w.size() >= 3 && w[0] == "#" && w[1] == "nSteps")
-        {
-            EXPECT_EQ(std::stoi(w[2]), nSteps - nStartup);
-            foundSteps = true;
-        }
-        if (w.size() == 4 && w[0] == "total")
-        {
-            EXPECT_DOUBLE_EQ(std::stod(w[3]), 1);
-            EXPECT_GE(std::stod(w[1]), 0.010);
-            foundTotal = true;
-        }
-        if (w.size() == 4 && w[0] == "oversetLate")
-        {
-            // Zero in the steps before its first use
-            const double meanLate = std::stod(w[1]);
-            EXPECT_GE
-            (
-                meanLate,
-                0.001*(nSteps - timedSteps::lateStep + 1)/(nSteps - 1)
-            );
-            scalar meanSlept = 0;
-            for (label i = nStartup; i < nSteps; ++i)
-            {
-                meanSlept += run.sleptLate[i]/(nSteps - nStartup);
-            }
-            EXPECT_LT(meanLate, meanSlept + margin);
-        }
-    }
-    EXPECT_TRUE(foundSteps);
-    EXPECT_TRUE(foundTotal);
+    label nFound = 0;
+    auto rows = summaryRows(run.dir/"stepTimersSummary.dat", nFound);
+    EXPECT_EQ(nFound, nSummarised);
 
-    // Per rank (one here): its own means, the same as the summary's
+    const double meanTotal = 0.011 + 0.001*nLate/nSummarised;
+    ASSERT_EQ(rows.count("total"), 1u);
+    EXPECT_DOUBLE_EQ(std::stod(rows["total"][3]), 1);
+    EXPECT_NEAR(std::stod(rows["total"][1]), meanTotal, written(meanTotal));
+
+    // A part first used later counts zero in the steps before
+    ASSERT_EQ(rows.count("oversetLate"), 1u);
+    const double meanLate = 0.001*nLate/nSummarised;
+    EXPECT_NEAR(std::stod(rows["oversetLate"][1]), meanLate, written(meanLate));
+
+    // Per rank (one here): its own means, adding up as the rows do
     ASSERT_TRUE(isFile(run.dir/"stepTimersRanks.dat"));
     std::vector<std::string> header, rank0;
     for (const std::string& line : readLines(run.dir/"stepTimersRanks.dat"))
@@ -238,28 +270,32 @@ TEST(stepTimersFunctionObject, summary)
         }
     }
     ASSERT_EQ(header.size(), rank0.size());
-    EXPECT_EQ(std::stoi(rank0[1]), nSteps - nStartup);
-    scalar parts = 0, total = 0;
+    EXPECT_EQ(std::stoi(rank0[1]), nSummarised);
+    std::map<std::string, double> mean;
     for (size_t i = 2; i < header.size(); ++i)
     {
-        const scalar v = std::stod(rank0[i]);
-        if (header[i] == "rbd" || header[i] == "overset"
-         || header[i] == "pimple" || header[i] == "preUpdate")
-        {
-            parts += v;
-        }
-        if (header[i] == "total")
-        {
-            total = v;
-        }
+        mean[header[i]] = std::stod(rank0[i]);
     }
-    EXPECT_GE(total, 0.010);
-    EXPECT_NEAR(parts, total, 0.05*total);
+    EXPECT_NEAR(mean["total"], meanTotal, written(meanTotal));
+    EXPECT_NEAR
+    (
+        mean["rbd"] + mean["overset"] + mean["pimple"] + mean["preUpdate"],
+        mean["total"],
+        4*written(meanTotal)
+    );
+    EXPECT_NEAR
+    (
+        mean["pimpleMomentum"] + mean["pimpleTurbulence"]
+      + mean["pimpleSync"],
+        mean["pimple"],
+        3*written(mean["pimple"])
+    );
 }
 
 
-TEST(stepTimersFunctionObject, pimpleIsTotalWithoutStamp)
+TEST(stepTimersFunctionObject, pimpleIsTotalWithoutStampOrLaps)
 {
+    manualClock clock;
     scratchTime runTimePtr
     (
         "flapFoamTest-stepTimers",
@@ -271,7 +307,7 @@ TEST(stepTimersFunctionObject, pimpleIsTotalWithoutStamp)
 
     while (runTime.loop())
     {
-        sleepMs(4);
+        clock.advance(4);
     }
 
     const datFile dat(outputDir(runTime)/"stepTimers.dat");
@@ -288,7 +324,7 @@ TEST(stepTimersFunctionObject, pimpleIsTotalWithoutStamp)
         EXPECT_EQ(dat(i, "overset"), 0);
         EXPECT_EQ(dat(i, "preUpdate"), 0);
         EXPECT_EQ(dat(i, "pimple"), dat(i, "total"));
-        EXPECT_GE(dat(i, "total"), 0.004);
+        EXPECT_NEAR(dat(i, "total"), 0.004, written(0.004));
     }
 }
 

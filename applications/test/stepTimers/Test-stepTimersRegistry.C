@@ -21,17 +21,18 @@ License
 
 Description
     GoogleTest unit tests of the step timers' registry (flapFoamTest-
-    stepTimers): a scope adds its elapsed time (a 20 ms sleep gives
-    0.02 s), parts stay in the order of first use, reset zeroes the parts
-    and clears the stamps but keeps the names, New returns the same object
-    for the Time database and any registry on it, nested scopes and adds
-    inside a scope are exclusive, stamps; laps from a stamp exclude the
-    scopes inside them and add up with them to the elapsed time, the
-    trailing lap goes to its part at endLap (and not after a reset); counts
-    add up and take nothing from scopes or laps.  The function object:
-    Test-stepTimersFunctionObject.C.
+    stepTimers): a scope adds its elapsed time, parts stay in the order of
+    first use, reset zeroes the parts and clears the stamps but keeps the
+    names, New returns the same object for the Time database and any
+    registry on it, nested scopes and adds inside a scope are exclusive,
+    stamps; laps from a stamp exclude the scopes inside them and add up
+    with them to the elapsed time, the trailing lap goes to its part at
+    endLap (and not after a reset); counts add up and take nothing from
+    scopes or laps; without a manual clock the timers read the steady
+    clock.  The function object: Test-stepTimersFunctionObject.C.
 
-    Sleeps are timed against loose upper bounds: the machine may be shared.
+    The timers read a manual clock (stepTimersTestHelpers.H): every time is
+    exact, to round-off, whatever the machine's load.
 
 \*---------------------------------------------------------------------------*/
 
@@ -48,33 +49,49 @@ using namespace Foam::stepTimersTest;
 
 TEST(stepTimersRegistry, scopeAddsElapsedTime)
 {
+    manualClock clock;
     scratchTime runTime("flapFoamTest-stepTimers", 1, 1);
     stepTimers& timers = stepTimers::New(runTime());
 
-    scalar slept = 0;
     {
         stepTimers::scope timer(timers, "rbd");
-        slept += sleepMs(20);
+        clock.advance(20);
     }
+    EXPECT_NEAR(timers["rbd"], 0.020, roundOff);
 
-    EXPECT_GE(timers["rbd"], 0.02);
-    EXPECT_LT(timers["rbd"], slept + margin);
-
-    // A second scope adds to the part
+    // A second scope adds to the part; time outside scopes goes nowhere
+    clock.advance(7);
     {
         stepTimers::scope timer(timers, "rbd");
-        slept += sleepMs(20);
+        clock.advance(20);
     }
-
-    EXPECT_GE(timers["rbd"], 0.04);
-    EXPECT_LT(timers["rbd"], slept + 2*margin);
+    EXPECT_NEAR(timers["rbd"], 0.040, roundOff);
     EXPECT_EQ(timers["never"], 0);
     EXPECT_EQ(timers.nOpen(), 0);
 }
 
 
+TEST(stepTimersRegistry, steadyClockWithoutManualClock)
+{
+    // The default source: a reading between two of the steady clock
+    const auto before = stepTimers::clock::now();
+    const auto reading = stepTimers::now();
+    const auto after = stepTimers::clock::now();
+    EXPECT_TRUE(before <= reading);
+    EXPECT_TRUE(reading <= after);
+
+    // And again after a manual clock is gone
+    {
+        manualClock clock;
+        EXPECT_TRUE(stepTimers::now() == stepTimers::clock::time_point());
+    }
+    EXPECT_TRUE(stepTimers::now() >= after);
+}
+
+
 TEST(stepTimersRegistry, partsInOrderOfFirstUse)
 {
+    manualClock clock;
     scratchTime runTime("flapFoamTest-stepTimers", 1, 1);
     stepTimers& timers = stepTimers::New(runTime());
 
@@ -84,6 +101,7 @@ TEST(stepTimersRegistry, partsInOrderOfFirstUse)
     timers.add("rbd", 0);
     {
         stepTimers::scope timer(timers, "overset");
+        clock.advance(5);
     }
 
     const wordList expected({"pimple", "overset", "rbd"});
@@ -93,7 +111,7 @@ TEST(stepTimersRegistry, partsInOrderOfFirstUse)
         EXPECT_EQ(timers.parts()[i], expected[i]);
     }
     EXPECT_EQ(timers["pimple"], 4);
-    EXPECT_GE(timers["overset"], 2);
+    EXPECT_NEAR(timers["overset"], 2.005, roundOff);
     EXPECT_EQ(timers["rbd"], 0);
 }
 
@@ -149,42 +167,38 @@ TEST(stepTimersRegistry, newReturnsTheSameObject)
 
 TEST(stepTimersRegistry, nestedScopesAreExclusive)
 {
+    manualClock clock;
     scratchTime runTime("flapFoamTest-stepTimers", 1, 1);
     stepTimers& timers = stepTimers::New(runTime());
 
-    scalar sleptOuter = 0, sleptInner = 0, sleptInnermost = 0;
-    const auto start = stepTimers::clock::now();
+    const auto start = stepTimers::now();
     {
         stepTimers::scope outer(timers, "oversetMovePoints");
-        sleptOuter = sleepMs(10);
+        clock.advance(10);
         {
             stepTimers::scope inner(timers, "rbd");
-            sleptInner = sleepMs(20);
+            clock.advance(20);
             {
                 stepTimers::scope innermost(timers, "rbdForces");
-                sleptInnermost = sleepMs(10);
+                clock.advance(10);
             }
             EXPECT_EQ(timers.nOpen(), 2);
         }
         timers.add("oversetStencil", 0.005);   // counts as nested too
     }
-    const scalar elapsed =
-        stepTimers::seconds(start, stepTimers::clock::now());
+    const scalar elapsed = stepTimers::seconds(start, stepTimers::now());
 
     EXPECT_EQ(timers.nOpen(), 0);
-
-    EXPECT_GE(timers["rbdForces"], 0.01);
-    EXPECT_LT(timers["rbdForces"], sleptInnermost + margin);
-    EXPECT_GE(timers["rbd"], 0.02);
-    EXPECT_LT(timers["rbd"], sleptInner + margin);
-    EXPECT_GE(timers["oversetMovePoints"], 0.01 - 0.005);
-    EXPECT_LT(timers["oversetMovePoints"], sleptOuter - 0.005 + margin);
+    EXPECT_NEAR(elapsed, 0.040, roundOff);
+    EXPECT_NEAR(timers["rbdForces"], 0.010, roundOff);
+    EXPECT_NEAR(timers["rbd"], 0.020, roundOff);
+    EXPECT_NEAR(timers["oversetMovePoints"], 0.010 - 0.005, roundOff);
 
     // The parts add up to the outer scope
     const scalar sum =
         timers["rbdForces"] + timers["rbd"] + timers["oversetStencil"]
       + timers["oversetMovePoints"];
-    EXPECT_NEAR(sum, elapsed, 1e-3);
+    EXPECT_NEAR(sum, elapsed, roundOff);
 
     // Outside any scope an add does not nest
     timers.add("pimple", 1);
@@ -194,83 +208,83 @@ TEST(stepTimersRegistry, nestedScopesAreExclusive)
 
 TEST(stepTimersRegistry, stamps)
 {
+    manualClock clock;
     scratchTime runTime("flapFoamTest-stepTimers", 1, 1);
     stepTimers& timers = stepTimers::New(runTime());
 
     EXPECT_FALSE(timers.stamped(stepTimers::meshUpdated));
     EXPECT_THROW(timers.stampTime(stepTimers::meshUpdated), Foam::error);
 
-    const auto before = stepTimers::clock::now();
+    clock.advance(3);
+    const auto first = stepTimers::now();
     timers.stamp(stepTimers::meshUpdated);
-    const auto after = stepTimers::clock::now();
-
     ASSERT_TRUE(timers.stamped(stepTimers::meshUpdated));
-    EXPECT_TRUE(timers.stampTime(stepTimers::meshUpdated) >= before);
-    EXPECT_TRUE(timers.stampTime(stepTimers::meshUpdated) <= after);
+    EXPECT_TRUE(timers.stampTime(stepTimers::meshUpdated) == first);
 
     // A later stamp of the same name replaces it
-    sleepMs(5);
+    clock.advance(5);
     timers.stamp(stepTimers::meshUpdated);
-    EXPECT_GE
+    EXPECT_NEAR
     (
-        stepTimers::seconds(after, timers.stampTime(stepTimers::meshUpdated)),
-        0.005
+        stepTimers::seconds(first, timers.stampTime(stepTimers::meshUpdated)),
+        0.005,
+        roundOff
     );
 }
 
 
 TEST(stepTimersRegistry, lapsExcludeTheScopesInside)
 {
+    manualClock clock;
     scratchTime runTime("flapFoamTest-stepTimers", 1, 1);
     stepTimers& timers = stepTimers::New(runTime());
 
     // From the stamp: 10 ms, a 20 ms scope (nested: excluded), 10 ms
     timers.stamp(stepTimers::meshUpdated);
-    const auto start = stepTimers::clock::now();
-    scalar outside = sleepMs(10);
-    scalar inside = 0;
+    const auto start = stepTimers::now();
+    clock.advance(10);
     {
         stepTimers::scope solve(timers, "pimplePressureSolve");
-        inside = sleepMs(20);
+        clock.advance(20);
     }
-    outside += sleepMs(10);
-    timers.lap("pimpleMomentum");
+    clock.advance(10);
+    const auto lapEnd = timers.lap("pimpleMomentum");
 
-    EXPECT_GE(timers["pimpleMomentum"], 0.02);
-    EXPECT_LT(timers["pimpleMomentum"], outside + margin);
-    EXPECT_GE(timers["pimplePressureSolve"], 0.02);
-    EXPECT_LT(timers["pimplePressureSolve"], inside + margin);
+    EXPECT_TRUE(lapEnd == stepTimers::now());
+    EXPECT_NEAR(timers["pimpleMomentum"], 0.020, roundOff);
+    EXPECT_NEAR(timers["pimplePressureSolve"], 0.020, roundOff);
 
     // The next lap starts where this one ended; the trailing stretch goes
     // to its part at endLap (the function object's execute)
-    sleepMs(10);
+    clock.advance(10);
     timers.lap("pimplePressure");
     timers.trailingLap("pimpleTurbulence");
-    sleepMs(10);
-    timers.endLap();
-    const scalar elapsed =
-        stepTimers::seconds(start, stepTimers::clock::now());
+    clock.advance(15);
+    EXPECT_TRUE(timers.endLap());
+    const scalar elapsed = stepTimers::seconds(start, stepTimers::now());
 
-    EXPECT_GE(timers["pimplePressure"], 0.01);
-    EXPECT_GE(timers["pimpleTurbulence"], 0.01);
+    EXPECT_NEAR(timers["pimplePressure"], 0.010, roundOff);
+    EXPECT_NEAR(timers["pimpleTurbulence"], 0.015, roundOff);
     const scalar sum =
         timers["pimpleMomentum"] + timers["pimplePressureSolve"]
       + timers["pimplePressure"] + timers["pimpleTurbulence"];
-    EXPECT_NEAR(sum, elapsed, 1e-3);
+    EXPECT_NEAR(sum, elapsed, roundOff);
 
     // Without a trailing part endLap adds nothing; reset clears it
     const scalar turbulence = timers["pimpleTurbulence"];
-    timers.endLap();
+    clock.advance(5);
+    EXPECT_FALSE(timers.endLap());
     EXPECT_EQ(timers["pimpleTurbulence"], turbulence);
     timers.trailingLap("pimpleTurbulence");
     timers.reset();
-    timers.endLap();
+    EXPECT_FALSE(timers.endLap());
     EXPECT_EQ(timers["pimpleTurbulence"], 0);
 }
 
 
 TEST(stepTimersRegistry, countsAreNotSeconds)
 {
+    manualClock clock;
     scratchTime runTime("flapFoamTest-stepTimers", 1, 1);
     stepTimers& timers = stepTimers::New(runTime());
 
@@ -278,10 +292,10 @@ TEST(stepTimersRegistry, countsAreNotSeconds)
     {
         stepTimers::scope solve(timers, "pimplePressureSolve");
         timers.count("pIterations1", 17);
-        sleepMs(10);
+        clock.advance(10);
     }
     timers.count("pIterations1", 3);
-    sleepMs(10);
+    clock.advance(10);
     timers.lap("pimplePressure");
 
     EXPECT_EQ(timers["pIterations1"], 20);
@@ -289,9 +303,8 @@ TEST(stepTimersRegistry, countsAreNotSeconds)
     EXPECT_FALSE(timers.isCount("pimplePressure"));
 
     // Neither the scope nor the lap lost the counted "seconds"
-    EXPECT_GE(timers["pimplePressureSolve"], 0.01);
-    EXPECT_GE(timers["pimplePressure"], 0.01);
-    EXPECT_LT(timers["pimplePressure"], 0.5);
+    EXPECT_NEAR(timers["pimplePressureSolve"], 0.010, roundOff);
+    EXPECT_NEAR(timers["pimplePressure"], 0.010, roundOff);
 }
 
 // ************************************************************************* //

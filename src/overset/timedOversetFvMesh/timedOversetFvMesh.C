@@ -69,6 +69,11 @@ const Foam::word Foam::timedOversetFvMesh::pimpleInterpolatePart
     "pimpleOversetInterpolate"
 );
 
+const Foam::word Foam::timedOversetFvMesh::preUpdateInterpolatePart
+(
+    "preUpdateOversetInterpolate"
+);
+
 const Foam::word Foam::timedOversetFvMesh::pressureSolvePart
 (
     "pimplePressureSolve"
@@ -104,11 +109,18 @@ void Foam::timedOversetFvMesh::timedInterpolate(Field<Type>& psi) const
     {
         interpolateField(psi);
     }
-    else
+    else if (timers_.stamped(stepTimers::meshUpdated))
     {
         stepTimers::scope timer(timers_, pimpleInterpolatePart);
         interpolateField(psi);
         timers_.count(pimpleInterpolationsPart, 1);
+    }
+    else
+    {
+        // Before the update: the function objects after stepTimers (e.g.
+        // flightData's forces), within the next step's preUpdate
+        stepTimers::scope timer(timers_, preUpdateInterpolatePart);
+        interpolateField(psi);
     }
 }
 
@@ -257,6 +269,7 @@ Foam::timedOversetFvMesh::timedOversetFvMesh(const IOobject& io)
         timers_.add(waitPart, 0);
     }
     timers_.add(pimpleInterpolatePart, 0);
+    timers_.add(preUpdateInterpolatePart, 0);
     timers_.add(pressureSolvePart, 0);
     timers_.add(momentumSolvePart, 0);
     timers_.add(otherSolvePart, 0);

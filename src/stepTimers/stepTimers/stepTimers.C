@@ -34,6 +34,8 @@ const Foam::word Foam::stepTimers::meshUpdateStart("meshUpdateStart");
 
 const Foam::word Foam::stepTimers::meshUpdated("meshUpdated");
 
+Foam::stepTimers::clockSource Foam::stepTimers::source_(&clock::now);
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -52,7 +54,7 @@ Foam::stepTimers::stepTimers(const objectRegistry& db)
         )
     ),
     topLevel_(0),
-    lapStart_(clock::now()),
+    lapStart_(now()),
     lapTopLevel_(0),
     lastTimeIndex_(-1)
 {}
@@ -131,31 +133,41 @@ void Foam::stepTimers::accumulate(const word& part, const scalar s)
 }
 
 
+void Foam::stepTimers::useClock(const clockSource source)
+{
+    source_ = source ? source : &clock::now;
+}
+
+
 void Foam::stepTimers::stamp(const word& name)
 {
-    lapStart_ = clock::now();
+    lapStart_ = now();
     lapTopLevel_ = topLevel_;
     stamps_.set(name, lapStart_);
 }
 
 
-void Foam::stepTimers::lap(const word& part)
+Foam::stepTimers::clock::time_point Foam::stepTimers::lap(const word& part)
 {
-    const clock::time_point now = clock::now();
+    const clock::time_point reading = now();
     const scalar inside = topLevel_ - lapTopLevel_;
-    add(part, seconds(lapStart_, now) - inside);
-    lapStart_ = now;
+    add(part, seconds(lapStart_, reading) - inside);
+    lapStart_ = reading;
     lapTopLevel_ = topLevel_;
+    return reading;
 }
 
 
-void Foam::stepTimers::endLap()
+bool Foam::stepTimers::endLap()
 {
-    if (!trailing_.empty())
+    if (trailing_.empty())
     {
-        lap(trailing_);
-        trailing_.clear();
+        return false;
     }
+
+    lap(trailing_);
+    trailing_.clear();
+    return true;
 }
 
 

@@ -58,6 +58,9 @@ const Foam::wordList Foam::functionObjects::stepTimers::groupPrefixes
 });
 
 
+const Foam::word Foam::functionObjects::stepTimers::syncPart("pimpleSync");
+
+
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace
@@ -399,7 +402,7 @@ Foam::functionObjects::stepTimers::stepTimers
     parts_(),
     nSeen_(0),
     nHeader_(-1),
-    previous_(clock::now()),
+    previous_(Foam::stepTimers::now()),
     own_(0),
     previousTimeIndex_(-1),
     nSteps_(0),
@@ -416,7 +419,7 @@ Foam::functionObjects::stepTimers::stepTimers
     // The first step starts at the same instant on all ranks (every rank
     // constructs the function objects)
     returnReduce(true, andOp<bool>());
-    previous_ = clock::now();
+    previous_ = Foam::stepTimers::now();
 }
 
 
@@ -534,8 +537,14 @@ void Foam::functionObjects::stepTimers::publish(const scalarList& values)
 
 bool Foam::functionObjects::stepTimers::execute()
 {
-    // The stretch still open (Foam::fv::pimpleTimers: the turbulence)
-    timers_.endLap();
+    // The stretch still open (Foam::fv::pimpleTimers: the turbulence); with
+    // laps the synchronisation below is a lap of its own, registered first
+    // so that the ranks learn of it with the other new parts
+    const bool lapped = timers_.endLap();
+    if (lapped)
+    {
+        timers_.add(syncPart, 0);
+    }
 
     // Synchronise the ranks, so that the step ends at the same instant on
     // all of them (the wait of the faster ranks counts in their pimple),
@@ -546,7 +555,12 @@ bool Foam::functionObjects::stepTimers::execute()
         orOp<bool>()
     );
 
-    const clock::time_point now = clock::now();
+    // The end of the step: with laps, the end of the sync lap itself, so
+    // that the laps and the parts inside them add up to pimple exactly
+    const clock::time_point now =
+    (
+        lapped ? timers_.lap(syncPart) : Foam::stepTimers::now()
+    );
 
     const scalar total = Foam::stepTimers::seconds(previous_, now);
     const scalar pimple = pimpleTime(now, total);
@@ -580,7 +594,7 @@ bool Foam::functionObjects::stepTimers::execute()
     timers_.reset();
 
     previous_ = now;
-    own_ = Foam::stepTimers::seconds(now, clock::now());
+    own_ = Foam::stepTimers::seconds(now, Foam::stepTimers::now());
 
     return true;
 }
