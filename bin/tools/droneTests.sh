@@ -5,9 +5,9 @@
 # prints PASS/FAIL lines "PASS [label] ..." (a failure sets status=1):
 # runAllrun, scenarios, motionCycle, climbed, cleanKeepsRuns, lockedFolder,
 # plots, copiedCase, result, flightData, quasiSteady, vacuum.  Needs:
-# python (Debian's python3), the case folder as the working directory,
-# testRuns (the folder of the checks' runs and logs, set by the Alltest),
-# checkRun (the single-wing drone's scripts/checkRun.py).
+# python (Debian's python3) and flapfoam (etc/bashrc), the case folder as
+# the working directory, testRuns (the folder of the checks' runs and
+# logs, set by the Alltest).
 #------------------------------------------------------------------------------
 
 projectScripts="$(cd "${BASH_SOURCE[0]%/*}" && pwd -P)"
@@ -25,7 +25,6 @@ do
             -set system/fvSolution "solvers/$s/relTol" 0)
 done
 laminar=(-set constant/turbulenceProperties simulationType laminar)
-checkRun="$projectScripts/../../cases/singleWingDrone/scripts/checkRun.py"
 
 # runAllrun [-each] <label> <Allrun options...>: the run's log in
 # $testRuns/log.Alltest.<label>; one line for the run (completed, no orphan at
@@ -225,20 +224,20 @@ copiedCase()
     rm -rf "$copy"
 }
 
-# result <label> <checkRun.py arguments...>
+# result <label> <flapfoam check_run arguments...>
 result()
 {
     local label="$1"
     shift
-    labelled "$label" "$python" "$checkRun" "$@"
+    labelled "$label" flapfoam check_run "$@"
 }
 
-# flightData <label> <flapfoam.io.flight_data arguments...>
+# flightData <label> <flapfoam flight_data arguments...>
 flightData()
 {
     local label="$1"
     shift
-    labelled "$label" "$python" -m flapfoam.io.flight_data "$@"
+    labelled "$label" flapfoam flight_data "$@"
 }
 
 # quasiSteady <label> <run folder> <rows> <Allrun options...>: Allrun
@@ -263,7 +262,7 @@ quasiSteady()
     fi
     flightData "$label" check "$dir" -uniformStep -rows "$rows" -attr level=none \
         -attr stencil=none -attr model=quasiSteady
-    labelled "$label" "$python" -m flapfoam.checks.result_checks \
+    labelled "$label" flapfoam result_checks \
         flight-data-joints "$dir"
 }
 
