@@ -5,7 +5,7 @@
 The flapfoam command: one entry to the package's tools.
 
     flapfoam TOOL [options]      run the tool (its own -h for its options)
-    flapfoam -help               the tools and what each does
+    flapfoam -help               the tools, by subpackage, and what each does
 
 bin/flapfoam runs this with the interpreter of FLAPFOAM_PYTHON (etc/bashrc:
 Debian's /usr/bin/python3, which has numpy, scipy, h5py and matplotlib), so
@@ -66,11 +66,24 @@ def tools():
     return dict(sorted(found.items()))
 
 
+def subpackage_title(sub):
+    """What a subpackage holds: its docstring up to the first colon."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    with open(os.path.join(here, sub, "__init__.py")) as fh:
+        return first_sentence(fh.read()).split(":")[0]
+
+
 def usage(out):
+    """The tools under a heading per subpackage ("checks: Checks, ...")."""
     out.write("usage: flapfoam TOOL [options] (flapfoam TOOL -h: the "
-              "tool's options)\n\ntools:\n")
-    for name, (_, doc) in tools().items():
-        out.write("  %-24s %s\n" % (name, doc))
+              "tool's options)\n")
+    groups = {}
+    for name, (module, doc) in tools().items():
+        groups.setdefault(module.split(".")[1], []).append((name, doc))
+    for sub, listed in sorted(groups.items()):
+        out.write("\n%s: %s\n" % (sub, subpackage_title(sub)))
+        for name, doc in listed:
+            out.write("  %-24s %s\n" % (name, doc))
 
 
 def run(module, argv):

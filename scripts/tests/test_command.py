@@ -5,6 +5,7 @@
 with a python3 first on the PATH that has no numpy (a cluster module's,
 conda's, pyenv's)."""
 
+import io
 import os
 import subprocess
 
@@ -37,6 +38,31 @@ def test_tools_are_the_runnable_modules():
     # a subpackage's TOOL_PREFIX names its tools
     assert tools["scaling_validate"][0] == "flapfoam.scaling.validate"
     assert tools["plot_step_timers"][0] == "flapfoam.plots.step_timers"
+
+
+def test_help_lists_each_tool_once_under_its_subpackage():
+    out = io.StringIO()
+    command.usage(out)
+    groups, heading = {}, None
+    for line in out.getvalue().splitlines()[1:]:
+        if line and not line.startswith(" "):
+            heading = line.split(":")[0]
+            assert heading not in groups, heading
+            groups[heading] = []
+        elif line:
+            groups[heading].append(line.split()[0])
+    tools = command.tools()
+    listed = [t for names in groups.values() for t in names]
+    assert sorted(listed) == sorted(tools)      # each tool once
+    for heading, names in groups.items():
+        assert names and all(tools[t][0].startswith(
+            "flapfoam.%s." % heading) for t in names), (heading, names)
+    assert list(groups) == sorted(groups)
+    assert set(groups) == {m.split(".")[1] for m, _ in tools.values()}
+    assert "scenarios" in groups["harness"] and \
+        "check_run" in groups["checks"] and \
+        "scaling_validate" in groups["scaling"]
+    assert "harness: The test harness\n" in out.getvalue()
 
 
 def test_two_tools_of_one_name_are_refused(tmp_path, monkeypatch):
