@@ -84,21 +84,30 @@ def verdicts(capsys, names):
 
 # ----------------------------------------------------------- prescribed
 
-def test_prescribed_exact_passes_and_a_perturbed_table_fails(tmp_path):
+PRESCRIBED = ["prescribed state files", "prescribed joints.dat"]
+
+
+def test_prescribed_exact_passes_and_a_perturbed_table_fails(tmp_path,
+                                                             capsys):
     case = drone_run(tmp_path)
     assert cr.check_prescribed(str(case), None, 1e-12, 1e-11) == 0
+    assert verdicts(capsys, PRESCRIBED) == {n: True for n in PRESCRIBED}
     rows = joints_rows(TIMES)
     rows[2, 4] += 1e-9*1.2          # q_1 off by 1e-9 of the amplitude
     write_joints(case, rows)
     assert cr.check_prescribed(str(case), None, 1e-12, 1e-11) == 1
+    assert verdicts(capsys, PRESCRIBED) == {PRESCRIBED[0]: True,
+                                            PRESCRIBED[1]: False}
 
 
-def test_prescribed_a_perturbed_state_file_fails(tmp_path):
+def test_prescribed_a_perturbed_state_file_fails(tmp_path, capsys):
     case = drone_run(tmp_path)
     t = TIMES[-1]
     q1, qd1, qdd1 = wang_columns(t)
     write_state(case, t, [0, q1], [0, qd1], [0, qdd1*(1 + 1e-9)])
     assert cr.check_prescribed(str(case), None, 1e-12, 1e-11) == 1
+    assert verdicts(capsys, PRESCRIBED) == {PRESCRIBED[0]: False,
+                                            PRESCRIBED[1]: True}
 
 
 def test_prescribed_without_imposed_motion_fails(tmp_path):
@@ -250,7 +259,7 @@ def test_compare_last_rows_at_different_times_fails(tmp_path):
                             cr.JointsComparison()) == 1
 
 
-def test_compare_state_at_another_time_fails(tmp_path):
+def test_compare_a_state_that_differs_fails_alone(tmp_path, capsys):
     a, b = drone_run(tmp_path, "a"), drone_run(tmp_path, "b")
     rows = joints_rows(TIMES)
     last = rows[-1]
@@ -258,6 +267,8 @@ def test_compare_state_at_another_time_fails(tmp_path):
                 last[[3, 6]])
     want = cr.JointsComparison(None, 1e-6, "last", True)
     assert cr.check_compare(str(a), str(b), None, want) == 1
+    assert verdicts(capsys, ["compare joints.dat", "compare state"]) == {
+        "compare joints.dat": True, "compare state": False}
 
 
 def test_initial_values_and_signs(tmp_path):

@@ -142,16 +142,21 @@ def check_prescribed(case, name, tol, tol_table):
                    J[:, c["qDdot_%d" % qi]], ev)
         e_table = np.maximum(e_table, [float(x.max()) for x in e])
 
-    ok = len(sts) > 0 and e_state.max() <= tol \
-        and e_table.max() <= tol_table
-    return report(ok, name or "prescribed",
-                  "joints %s: state files (17 digits, %d steps) max error "
-                  "q %.2e qDot %.2e qDdot %.2e (tol %g); joints.dat (12 "
-                  "digits, %d rows) q %.2e qDot %.2e qDdot %.2e (tol %g); "
-                  "error = |sim - analytic|/(A omega^k)"
-                  % ("/".join("q_%d" % q for q in sorted(imposed)), len(sts),
-                     e_state[0], e_state[1], e_state[2], tol, len(J),
-                     e_table[0], e_table[1], e_table[2], tol_table))
+    name = name or "prescribed"
+    joints_named = "/".join("q_%d" % q for q in sorted(imposed))
+    status = report(len(sts) > 0 and e_state.max() <= tol,
+                    name + " state files",
+                    "joints %s, %d rigidBodyMotionState files (17 digits): "
+                    "max error q %.2e qDot %.2e qDdot %.2e (tol %g), error "
+                    "= |sim - analytic|/(A omega^k)"
+                    % (joints_named, len(sts), e_state[0], e_state[1],
+                       e_state[2], tol))
+    status |= report(e_table.max() <= tol_table, name + " joints.dat",
+                     "joints %s, %d rows (12 digits): max error q %.2e qDot "
+                     "%.2e qDdot %.2e (tol %g)"
+                     % (joints_named, len(J), e_table[0], e_table[1],
+                        e_table[2], tol_table))
+    return status
 
 
 # The identities the step timers hold by construction (the same clock
@@ -336,25 +341,27 @@ def check_compare(a, b, name, want):
         i, k = ca.index(col), cb.index(col)
         floor = 1e-3*np.abs(A[:, i]).max() + 1e-300
         worst[col] = float(rel_diff(A[ia, i], B[ib, k], floor).max())
+    name = name or "compare"
     text = ", ".join("%s %.1e" % (k, v) for k, v in worst.items())
     max_rel = max(worst.values())
+    status = report(max_rel <= want.tol, name + " joints.dat",
+                    "%s rows (%d): max relative difference %.2e (tol %g): "
+                    "%s" % (want.rows, len(ia), max_rel, want.tol, text))
+    if not want.state:
+        return status
 
-    if want.state:
-        last = state_differences(a, b, ca, A)
-        if last is None:
-            return report(False, name or "compare",
-                          "no rigidBodyMotionState at a common last time")
-        t, s_worst = last
-        worst_key = max(s_worst, key=s_worst.get)
-        text += "; state at t = %g (17 digits): max %.1e (%s), q %s" % (
-            t, s_worst[worst_key], worst_key,
-            " ".join("%.1e" % v for k, v in s_worst.items()
-                     if k.startswith("q_")))
-        max_rel = max(max_rel, max(s_worst.values()))
-
-    return report(max_rel <= want.tol, name or "compare",
-                  "%s rows (%d): max relative difference %.2e (tol %g): %s"
-                  % (want.rows, len(ia), max_rel, want.tol, text))
+    last = state_differences(a, b, ca, A)
+    if last is None:
+        return status | report(False, name + " state", "no "
+                               "rigidBodyMotionState at a common last time")
+    t, s_worst = last
+    worst_key = max(s_worst, key=s_worst.get)
+    return status | report(
+        max(s_worst.values()) <= want.tol, name + " state",
+        "last rigidBodyMotionState, t = %g (17 digits): max relative "
+        "difference %.2e (%s; tol %g), q %s"
+        % (t, s_worst[worst_key], worst_key, want.tol, " ".join(
+            "%.1e" % v for k, v in s_worst.items() if k.startswith("q_"))))
 
 
 def check_initial(case, name, q, qdot_sign, tol):
