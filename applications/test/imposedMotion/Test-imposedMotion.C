@@ -183,30 +183,30 @@ TEST(Errors, FrequencyNotPositive)
         expectMotionError
         (
             "type harmonic; joint 0; amplitude 1; frequency " + fs + ";",
-            {"'frequency'", "> 0"}
+            {"frequency " + fs + ":", "a value > 0 is allowed"}
         );
         expectMotionError
         (
             "type wang; joint 0; waveform pitching; amplitude 1; K 1;"
             " frequency " + fs + ";",
-            {"'frequency'", "> 0"}
+            {"frequency " + fs + ":", "a value > 0 is allowed"}
         );
         expectMotionError
         (
             "type fourier; joint 0; a (1); frequency " + fs + ";",
-            {"'frequency'", "> 0"}
+            {"frequency " + fs + ":", "a value > 0 is allowed"}
         );
         expectMotionError
         (
             "type wangParametrization; jointList (0 1); Aphi 1; Kphi 0.5;"
             " Aalpha 1; falpha 20; Kalpha 1; fphi " + fs + ";",
-            {"'fphi'", "> 0"}
+            {"fphi " + fs + ":", "a value > 0 is allowed"}
         );
         expectMotionError
         (
             "type wangParametrization; jointList (0 1); Aphi 1; Kphi 0.5;"
             " Aalpha 1; fphi 20; Kalpha 1; falpha " + fs + ";",
-            {"'falpha'", "> 0"}
+            {"falpha " + fs + ":", "a value > 0 is allowed"}
         );
     }
 }

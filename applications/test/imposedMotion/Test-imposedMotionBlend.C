@@ -446,12 +446,12 @@ TEST(BlendErrors, ValueCheckedAsInTheDictionary)
     expectIOError
     (
         [&](){ list.set("flap", "frequency", -2, t0, Tb); },
-        {"'frequency'", "-2", "> 0"}
+        {"frequency -2:", "a value > 0 is allowed"}
     );
     expectIOError
     (
         [&](){ list.set("pitch", "K", 0, t0, Tb); },
-        {"'K'"}
+        {"K 0:", "> 0 (the pitching waveform)"}
     );
 }
 

@@ -163,7 +163,7 @@ TEST(Errors, WangKOutOfRange)
         (
             std::string("type wang; joint 0; waveform flapping; amplitude 1;"
             " frequency 2; K ") + K + ";",
-            {"'K'", "flapping", "0 < K < 1"}
+            {"K " + std::string(K) + ":", "(0, 1)", "flapping"}
         );
     }
 
@@ -174,7 +174,7 @@ TEST(Errors, WangKOutOfRange)
         (
             std::string("type wang; joint 0; waveform pitching; amplitude 1;"
             " frequency 2; K ") + K + ";",
-            {"'K'", "pitching", "K > 0"}
+            {"K " + std::string(K) + ":", "> 0", "pitching"}
         );
     }
 
@@ -204,7 +204,7 @@ TEST(Errors, WangUnknownWaveform)
     (
         "type wang; joint 0; waveform heaving; amplitude 1; frequency 2;"
         " K 0.5;",
-        {"'waveform'", "heaving", "flapping", "pitching"}
+        {"waveform heaving unknown", "flapping", "pitching"}
     );
 }
 

@@ -274,13 +274,13 @@ TEST(Errors, WangParametrizationBadInput)
     (
         "type wangParametrization; jointList (0 1); Aphi 1; fphi 20;"
         " Kphi 1.5; Aalpha 1; falpha 20; Kalpha 1;",
-        {"'Kphi'", "0 < Kphi < 1"}
+        {"Kphi 1.5:", "(0, 1) (the flapping waveform)"}
     );
     expectMotionError
     (
         "type wangParametrization; jointList (0 1); Aphi 1; fphi 20;"
         " Kphi 0.5; Aalpha 1; falpha 20; Kalpha -1;",
-        {"'Kalpha'", "Kalpha > 0"}
+        {"Kalpha -1:", "> 0 (the pitching waveform)"}
     );
 
     // Unknown motionType lists the allowed ones; the authors' controllers
@@ -289,7 +289,7 @@ TEST(Errors, WangParametrizationBadInput)
     (
         wangParametrizationText("motionType midStartControl_z_PD;"),
         {
-            "'motionType'", "midStartControl_z_PD", "flight controller",
+            "motionType midStartControl_z_PD", "flight controller",
             "not a motion type of flapFoam", "docs/control.md",
             "standard", "midStart", "midStart_2wings"
         }
@@ -298,14 +298,14 @@ TEST(Errors, WangParametrizationBadInput)
     (
         wangParametrizationText("motionType midStartControl_xzth_linearPD;"),
         {
-            "'motionType'", "midStartControl_xzth_linearPD",
+            "motionType midStartControl_xzth_linearPD",
             "flight controller", "flapfoam authors_control"
         }
     );
     expectMotionError
     (
         wangParametrizationText("motionType midstart;"),
-        {"'motionType'", "midstart", "not a valid", "midStart"}
+        {"motionType midstart unknown: must be one of", "midStart"}
     );
 
     // A misspelled optional key lists the allowed keys

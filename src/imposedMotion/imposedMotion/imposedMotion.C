@@ -34,34 +34,11 @@ namespace Foam
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
-Foam::scalar Foam::imposedMotion::getPositive
-(
-    const dictionary& dict,
-    const word& key
-)
-{
-    const scalar value = dict.get<scalar>(key);
-
-    if (!(value > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry '" << key << "' = " << value
-            << " is out of range: it must be > 0" << nl
-            << exit(FatalIOError);
-    }
-
-    return value;
-}
-
-
 void Foam::imposedMotion::checkKeys() const
 {
-    wordList allowed(allowedKeys());
-    allowed.append(word("type"));
-    allowed.append(jointsKey());
     const wordList ignored(ignoredKeys());
 
-    dictionaryKeys(allowed)
+    dictionaryKeys(keys())
         .named("'" + name_ + "' (type " + type() + ")")
         .alsoAllowing(ignored, "the paper authors' keys, ignored")
         .check(dict_);
@@ -114,6 +91,15 @@ Foam::imposedMotion::imposedMotion
 
 
 // * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * * //
+
+Foam::wordList Foam::imposedMotion::keys() const
+{
+    wordList k(allowedKeys());
+    k.append(word("type"));
+    k.append(jointsKey());
+    return k;
+}
+
 
 void Foam::imposedMotion::write(Ostream& os) const
 {

@@ -21,6 +21,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "imposedMotionBlend.H"
+#include "dictionaryRead.H"
 #include "primitiveEntry.H"
 #include "StringStream.H"
 
@@ -318,15 +319,8 @@ void Foam::imposedMotionBlend::reportChanged
 
 void Foam::imposedMotionBlend::readState(const dictionary& dict)
 {
-    const label nStages = dict.get<label>("nStages");
-
-    if (nStages < 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'nStages' = " << nStages
-            << " is out of range: it must be >= 1" << nl
-            << exit(FatalIOError);
-    }
+    const label nStages =
+        readAllowed(dict, "nStages", allowed::atLeast<label>(1));
 
     const word name(current().name());
     const word type(current().type());

@@ -21,6 +21,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "eABAModel.H"
+#include "dictionaryRead.H"
 #include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -81,13 +82,10 @@ void Foam::RBD::eABAModel::checkBodies() const
         }
         const dictionary& dict = e.dict();
 
-        const scalar m = dict.getOrDefault<scalar>("mass", 0);
-        if (!(m >= 0))
-        {
-            FatalIOErrorInFunction(dict)
-                << "body " << e.keyword() << ": mass " << m
-                << ": must be >= 0 (0: no mass)" << exit(FatalIOError);
-        }
+        readAllowed
+        (
+            dict, "mass", 0.0, allowed::atLeast(0.0).noting("0: no mass")
+        );
 
         if (!dict.found("inertia"))
         {

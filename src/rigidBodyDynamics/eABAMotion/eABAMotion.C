@@ -28,6 +28,7 @@ License
 #include "StringStream.H"
 #include "flightController.H"
 #include "dictionaryKeys.H"
+#include "dictionaryRead.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -44,29 +45,17 @@ namespace RBD
 
 void Foam::RBD::eABAMotion::readCoeffs(const dictionary& dict)
 {
-    nIter_ = dict.getOrDefault<label>("nIter", 1);
-    if (nIter_ < 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "nIter " << nIter_ << ": must be at least 1"
-            << exit(FatalIOError);
-    }
-
-    aRelax_ = dict.getOrDefault<scalar>("accelerationRelaxation", 1);
-    if (aRelax_ <= 0 || aRelax_ > 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "accelerationRelaxation " << aRelax_
-            << ": allowed range is (0, 1]" << exit(FatalIOError);
-    }
-
-    aDamp_ = dict.getOrDefault<scalar>("accelerationDamping", 1);
-    if (aDamp_ <= 0 || aDamp_ > 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "accelerationDamping " << aDamp_
-            << ": allowed range is (0, 1]" << exit(FatalIOError);
-    }
+    nIter_ = readAllowed(dict, "nIter", 1, allowed::atLeast<label>(1));
+    aRelax_ =
+        readAllowed
+        (
+            dict, "accelerationRelaxation", 1.0, allowed::openClosed(0.0, 1.0)
+        );
+    aDamp_ =
+        readAllowed
+        (
+            dict, "accelerationDamping", 1.0, allowed::openClosed(0.0, 1.0)
+        );
 
     report_ = dict.getOrDefault<Switch>("report", false);
 

@@ -21,6 +21,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fourier.H"
+#include "dictionaryRead.H"
 #include "mathematicalConstants.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -45,7 +46,7 @@ Foam::imposedMotions::fourier::fourier
 )
 :
     imposedMotion(name, dict),
-    frequency_(getPositive(dict, "frequency")),
+    frequency_(readAllowed(dict, "frequency", allowed::above(0.0))),
     omega_(constant::mathematical::twoPi*frequency_),
     a0_(dict.getOrDefault<scalar>("a0", 0)),
     a_(),

@@ -21,6 +21,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "harmonic.H"
+#include "dictionaryRead.H"
 #include "mathematicalConstants.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -46,7 +47,7 @@ Foam::imposedMotions::harmonic::harmonic
 :
     imposedMotion(name, dict),
     amplitude_(dict.get<scalar>("amplitude")),
-    frequency_(getPositive(dict, "frequency")),
+    frequency_(readAllowed(dict, "frequency", allowed::above(0.0))),
     phase_(dict.getOrDefault<scalar>("phase", 0)),
     offset_(dict.getOrDefault<scalar>("offset", 0)),
     omega_(constant::mathematical::twoPi*frequency_)

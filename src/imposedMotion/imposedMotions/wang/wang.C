@@ -21,6 +21,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "wang.H"
+#include "dictionaryRead.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -42,14 +43,13 @@ Foam::imposedMotions::wang::readWaveform(const dictionary& dict)
 {
     const wangWaveform::shape waveform
     (
-        wangWaveform::readShape(dict, "waveform")
+        readChoice(dict, "waveform", wangWaveform::shapeNames)
     );
 
     const scalar amplitude = dict.get<scalar>("amplitude");
-    const scalar frequency = getPositive(dict, "frequency");
-
-    const scalar K = dict.get<scalar>("K");
-    wangWaveform::checkK(dict, "K", waveform, K);
+    const scalar frequency =
+        readAllowed(dict, "frequency", allowed::above(0.0));
+    const scalar K = wangWaveform::readK(dict, "K", waveform);
 
     return wangWaveform
     (

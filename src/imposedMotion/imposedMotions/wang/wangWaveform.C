@@ -21,8 +21,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "wangWaveform.H"
+#include "dictionaryRead.H"
 #include "mathematicalConstants.H"
-#include "StringStream.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -51,65 +51,23 @@ Foam::imposedMotions::wangWaveform::wangWaveform(const parameters& p)
 
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
 
-Foam::imposedMotions::wangWaveform::shape
-Foam::imposedMotions::wangWaveform::readShape
-(
-    const dictionary& dict,
-    const word& key
-)
-{
-    const word name(dict.get<word>(key));
-
-    if (!shapeNames.found(name))
-    {
-        OStringStream allowed;
-        for (const word& n : shapeNames.names())
-        {
-            allowed << ' ' << n;
-        }
-
-        FatalIOErrorInFunction(dict)
-            << "Entry '" << key << "' = " << name
-            << " is not a valid waveform: allowed" << allowed.str().c_str()
-            << nl << exit(FatalIOError);
-    }
-
-    return shapeNames.get(name);
-}
-
-
-void Foam::imposedMotions::wangWaveform::checkK
+Foam::scalar Foam::imposedMotions::wangWaveform::readK
 (
     const dictionary& dict,
     const word& key,
-    const shape waveform,
-    const scalar K
+    const shape waveform
 )
 {
-    if (waveform == shape::flapping)
-    {
-        // asin(K cos(theta))/asin(K): needs 0 < K < 1
-        if (!(K > 0 && K < 1))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry '" << key << "' = " << K
-                << " is out of range for the flapping waveform:"
-                << " allowed 0 < " << key << " < 1" << nl
-                << exit(FatalIOError);
-        }
-    }
-    else
-    {
-        // tanh(K sin(theta))/tanh(K): needs K > 0
-        if (!(K > 0))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry '" << key << "' = " << K
-                << " is out of range for the pitching waveform:"
-                << " allowed " << key << " > 0" << nl
-                << exit(FatalIOError);
-        }
-    }
+    // Flapping asin(K cos(theta))/asin(K) needs 0 < K < 1; pitching
+    // tanh(K sin(theta))/tanh(K) needs K > 0
+    return readAllowed
+    (
+        dict,
+        key,
+        waveform == shape::flapping
+      ? allowed::open(0.0, 1.0).noting("the flapping waveform")
+      : allowed::above(0.0).noting("the pitching waveform")
+    );
 }
 
 

@@ -21,8 +21,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "wangParametrization.H"
+#include "dictionaryRead.H"
 #include "mathematicalConstants.H"
-#include "StringStream.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -81,51 +81,28 @@ Foam::imposedMotions::wangParametrization::readMotionType
     const dictionary& dict
 )
 {
-    const word name
-    (
-        dict.getOrDefault<word>
-        (
-            "motionType",
-            motionTypeNames[motionType::standard]
-        )
-    );
+    const word name(dict.getOrDefault<word>("motionType", word::null));
 
-    if (!motionTypeNames.found(name))
+    // The authors' controllers (midStartControl_z_PD, ..._xzth_PD, ...)
+    // are named as such; their xzth ones convert to flapFoam's controller
+    if (name.starts_with("midStartControl"))
     {
-        OStringStream allowed;
-        for (const word& n : motionTypeNames.names())
-        {
-            allowed << ' ' << n;
-        }
-
-        // The authors' controllers: midStartControl_z_PD, ..._xzth_PD, ...
-        const bool controller = name.starts_with("midStartControl");
-
-        // Their xzth controllers convert to flapFoam's controller
-        const bool xzth = name.starts_with("midStartControl_xzth");
-
         FatalIOErrorInFunction(dict)
-            << "Entry 'motionType' = " << name
+            << "motionType " << name << " (a flight controller of the paper"
+            << " authors' code) is not a motion type of flapFoam, where a"
+            << " controller entry sets the motions' parameters"
             << (
-                   controller
-                 ? " (a flight controller of the paper authors' code)"
-                   " is not a motion type of flapFoam, where a controller"
-                   " entry sets the motions' parameters"
-                 : " is not a valid motion type"
-               )
-            << (
-                   xzth
+                   name.starts_with("midStartControl_xzth")
                  ? " (flapfoam authors_control <this file> writes"
                    " the equivalent imposedMotion and controller entries)"
-                 : controller
-                 ? " (docs/control.md)"
-                 : ""
+                 : " (docs/control.md)"
                )
-            << ": allowed" << allowed.str().c_str()
-            << nl << exit(FatalIOError);
+            << ": must be one of " << motionTypeNames.sortedToc()
+            << exit(FatalIOError);
     }
 
-    return motionTypeNames.get(name);
+    return
+        readChoice(dict, "motionType", motionTypeNames, motionType::standard);
 }
 
 
@@ -146,9 +123,9 @@ Foam::imposedMotions::wangParametrization::readPhi
 )
 {
     const scalar A = dict.get<scalar>("Aphi");
-    const scalar f = getPositive(dict, "fphi");
-    const scalar K = dict.get<scalar>("Kphi");
-    wangWaveform::checkK(dict, "Kphi", wangWaveform::shape::flapping, K);
+    const scalar f = readAllowed(dict, "fphi", allowed::above(0.0));
+    const scalar K =
+        wangWaveform::readK(dict, "Kphi", wangWaveform::shape::flapping);
 
     // standard: A asin(K cos(theta))/asin(K);
     // midStart: -A asin(K sin(theta))/asin(K), sin = cos(theta - pi/2)
@@ -170,9 +147,9 @@ Foam::imposedMotions::wangParametrization::readAlpha
 )
 {
     const scalar A = dict.get<scalar>("Aalpha");
-    const scalar f = getPositive(dict, "falpha");
-    const scalar K = dict.get<scalar>("Kalpha");
-    wangWaveform::checkK(dict, "Kalpha", wangWaveform::shape::pitching, K);
+    const scalar f = readAllowed(dict, "falpha", allowed::above(0.0));
+    const scalar K =
+        wangWaveform::readK(dict, "Kalpha", wangWaveform::shape::pitching);
 
     // standard: A tanh(K sin(theta))/tanh(K);
     // midStart: A - A tanh(K cos(theta))/tanh(K), cos = sin(theta + pi/2)
