@@ -1,7 +1,7 @@
 # License
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""controlPlot's metrics of a controlled quantity's error, on made-up
+"""plot_control's metrics of a controlled quantity's error, on made-up
 errors whose answers are known by hand."""
 
 import math

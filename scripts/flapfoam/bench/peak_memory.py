@@ -75,7 +75,7 @@ def main():
     args = parser.parse_args()
     command = args.command[1:] if args.command[:1] == ["--"] else args.command
     if not command:
-        sys.exit("peakMemory: no command")
+        sys.exit("peak_memory: no command")
 
     proc = subprocess.Popen(command)
     peaks = {}
@@ -89,7 +89,7 @@ def main():
     total_mib = sum(peaks.values())/1024.0
     line = "%.1f MiB peak resident memory of %d %s process(es)" \
         % (total_mib, len(peaks), args.process)
-    print("peakMemory: " + line)
+    print("peak_memory: " + line)
     if args.output:
         with open(args.output, "w") as f:
             f.write("%.3f %d\n" % (total_mib, len(peaks)))

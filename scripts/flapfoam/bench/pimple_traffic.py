@@ -65,7 +65,7 @@ def traffic(folder, key, n1, n2):
         steps = mpi_counts.per_step(os.path.join(runs[0], "counts"), n1,
                                     os.path.join(runs[1], "counts"), n2)
     except ValueError as err:
-        raise FlapFoamError("pimpleTraffic: %s" % err)
+        raise FlapFoamError("pimple_traffic: %s" % err)
     calls = np.array([s["p2pCalls"] for s in steps])
     kbytes = np.array([s["p2pBytes"] for s in steps])/1e3
     return Traffic(level, ranks, setting, p_iterations(runs[1], n1, n2),

@@ -101,7 +101,7 @@ def read_run(case, n_cycles):
     if len(J) > 1 and J[-1, 0] < run.t1 <= 2*J[-1, 0] - J[-2, 0]:
         run.t1 = J[-1, 0]
     if J[-1, 0] < run.t1*(1 - 1e-9):
-        raise FlapFoamError("pimpleGuard: %s reached t = %g s, not the end of %g "
+        raise FlapFoamError("pimple_guard: %s reached t = %g s, not the end of %g "
                             "cycle(s), %g s" % (case, J[-1, 0], n_cycles, run.t1))
     steps = solver_log.steps(case)
     sel = (steps[:, 0] > t0) & (steps[:, 0] <= run.t1*(1 + 1e-9))

@@ -175,7 +175,7 @@ def main(argv=None):
         else:
             p.error("DIR, or DIR1 N1 DIR2 N2 (N1, N2: steps)")
     except ValueError as err:
-        raise FlapFoamError("mpiCounts: %s" % err)
+        raise FlapFoamError("mpi_counts: %s" % err)
 
 
 if __name__ == "__main__":

@@ -65,7 +65,7 @@ def find_files(path):
                     and "Summary" not in name and "Ranks" not in name:
                 found.append(os.path.join(root, name))
     if not found:
-        raise FlapFoamError("plotStepTimers: no stepTimers.dat under " + path)
+        raise FlapFoamError("stepTimers: no stepTimers.dat under " + path)
 
     return sorted(found, key=lambda f: (
         time_value(os.path.basename(os.path.dirname(f)), 0.0), f))
@@ -86,11 +86,11 @@ def read_file(fname):
                     columns = words[1:]
                 continue
             if columns is None:
-                raise FlapFoamError("plotStepTimers: %s: data before the '# time' "
+                raise FlapFoamError("stepTimers: %s: data before the '# time' "
                                     "header" % fname)
             values = [float(w) for w in words]
             if len(values) != len(columns):
-                raise FlapFoamError("plotStepTimers: %s: a row of %d values under a "
+                raise FlapFoamError("stepTimers: %s: a row of %d values under a "
                                     "header of %d columns" %
                                     (fname, len(values), len(columns)))
             rows.append(dict(zip(columns, values)))

@@ -69,7 +69,7 @@ PD_USES = {"amplitude": ("z", "bias"), "beta": ("x",), "offset": ("theta",)}
 
 
 def fail(msg):
-    raise FlapFoamError("authorsControl: " + msg)
+    raise FlapFoamError("authors_control: " + msg)
 
 
 def find_model(d, solver):

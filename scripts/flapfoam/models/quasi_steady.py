@@ -150,7 +150,7 @@ def main():
     if args.compare:
         err = errors(ref, np.loadtxt(args.compare))
         for name, e in err.items():
-            print("quasiSteady: %s: max |run - reference| = %.3g of its"
+            print("quasi_steady: %s: max |run - reference| = %.3g of its"
                   " range (tol %g)" % (name, e, args.tol))
         sys.exit(0 if max(err.values()) <= args.tol else 1)
 

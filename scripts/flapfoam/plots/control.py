@@ -381,14 +381,14 @@ def main(argv=None):
         print_table(rows, runs)
         plot_states(runs, out, parse_bands(args.band, runs[0].terms), settle)
         plot_outputs(runs, out)
-        print("controlPlot: settle %g s; %s/control-{states,outputs}.png,"
+        print("plot_control: settle %g s; %s/control-{states,outputs}.png,"
               " control-metrics.csv" % (settle, out))
     except ControlPlotError as e:
-        sys.exit("flapfoam.plots.control: %s" % e)
+        sys.exit("plot_control: %s" % e)
     status = 0
     if args.check:
         for row in rows:
-            status |= report(row["inBand"], "controlPlot %s: %s within %.4g"
+            status |= report(row["inBand"], "plot_control %s: %s within %.4g"
                              " %s of its set-point after %g s (max |e| %.4g,"
                              " rms %.4g, mean %.4g; settled at %.4g s)"
                              % (row["run"], row["quantity"], row["band"],

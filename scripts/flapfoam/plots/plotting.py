@@ -79,6 +79,6 @@ def step_timers_chart(case, out, label):
         plot_step_timers.chart([timers], [label], 2, plot_step_timers.Chart(
             os.path.join(out, "stepTimers.png")))
     except ValueError as e:
-        print("plotStepTimers: %s" % e)
+        print("plotRun: no step-timer plot: %s" % e)
         return 1
     return 0

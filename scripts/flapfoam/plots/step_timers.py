@@ -95,7 +95,7 @@ def plot(labels, means, columns_list, args):
               bbox_to_anchor=(1.0, 1.0))
     fig.tight_layout()
     fig.savefig(args.output, dpi=150)
-    print("plotStepTimers: wrote " + args.output)
+    print("plot_step_timers: wrote " + args.output)
 
 
 def chart(inputs, labels, n_startup, out):
@@ -141,7 +141,7 @@ def main(argv=None):
         chart(args.inputs, labels, args.n_startup,
               Chart(args.output, args.title, args.fine))
     except ValueError as e:
-        sys.exit("plotStepTimers: %s" % e)
+        sys.exit("plot_step_timers: %s" % e)
 
 if __name__ == "__main__":
     run_tool(main)

@@ -34,10 +34,10 @@ def run(case, body):
     try:
         attrs, d = flight_data.load(case)
     except (OSError, FileNotFoundError) as e:
-        raise FlapFoamError("compareModels: %s: %s" % (case, e))
+        raise FlapFoamError("compare_models: %s: %s" % (case, e))
     key = "coefficients/%s" % body
     if key not in d:
-        raise FlapFoamError("compareModels: %s: no %s in its flight data (bodies: %s)"
+        raise FlapFoamError("compare_models: %s: no %s in its flight data (bodies: %s)"
                             % (case, key, " ".join(sorted(
                                 k.split("/")[1] for k in d if k.startswith("coeff")))))
     return d["time"], d["joints/q"], d["joints/qDot"], d[key], attrs
@@ -63,7 +63,7 @@ def compare(cfd, qs, period):
     t_c, q_c, _, c_c, _ = cfd
     t_q, q_q, _, c_q, _ = qs
     if t_q[-1] < t_c[-1] - 1e-9:
-        raise FlapFoamError("compareModels: the QS run ends at t = %g s, before the"
+        raise FlapFoamError("compare_models: the QS run ends at t = %g s, before the"
                             " CFD run's %g s" % (t_q[-1], t_c[-1]))
     rows = []
     within = t_q <= t_c[-1] + 1e-12

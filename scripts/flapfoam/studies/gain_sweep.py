@@ -235,19 +235,19 @@ def plot(figure, rows, grid, pair, bands):
 def report(rows, grid, terms, settle):
     """The in-band region and the best point."""
     good = [r for r in rows if r["inBand"]]
-    print("gainSweep: %d of %d points within the bands after %g s%s"
+    print("gain_sweep: %d of %d points within the bands after %g s%s"
           % (len(good), len(rows), settle, "" if good else
              " (no stable point in the grid)"))
     for name in grid:
         if good and len(grid[name]) > 1:
             v = sorted({r[name] for r in good})
-            print("gainSweep:   %s in [%g, %g] (%d of %d values)"
+            print("gain_sweep:   %s in [%g, %g] (%d of %d values)"
                   % (name, v[0], v[-1], len(v), len(grid[name])))
     ok = [r for r in rows if not math.isnan(r["score"])]
     if not ok:
         return
     best = min(ok, key=lambda r: r["score"])
-    print("gainSweep: best: %s: score %.3g; %s" % (
+    print("gain_sweep: best: %s: score %.3g; %s" % (
         " ".join("%s %g" % (n, best[n]) for n in grid), best["score"],
         "; ".join("%s max|e| %.3g %s rms %.3g mean %.3g settled %.3g s"
                   % (s.label, s.scale*best[s.label + ".maxAbsError"],
@@ -302,7 +302,7 @@ def main(argv=None):
         start = time.time()
         rows = sweep.run_all(grid_points(grid), args.np)
         write_table(args.o + ".csv", rows, list(grid))
-        print("gainSweep: %d points (%d cycles, deltaT %g s, %d at a time)"
+        print("gain_sweep: %d points (%d cycles, deltaT %g s, %d at a time)"
               " in %.1f s wall, %.2f s per run: %s.csv" % (
                   len(rows), args.cycles, args.delta_t, args.np,
                   time.time() - start,
@@ -313,7 +313,7 @@ def main(argv=None):
         plot((args.o + ".png", title), rows, grid, pair, bands)
         report(rows, grid, template.terms, settle)
     except (SweepError, ControlPlotError) as e:
-        sys.exit("flapfoam.studies.gain_sweep: %s" % e)
+        sys.exit("gain_sweep: %s" % e)
 
 
 if __name__ == "__main__":

@@ -75,7 +75,7 @@ def read_runs(folder, n_cycles):
         try:
             cycles = pimple_guard.read_run(path, n_cycles)
         except (FlapFoamError, OSError, KeyError, ValueError) as err:
-            print("pimpleStudy: %s left out: %s" % (name, err))
+            print("pimple_study: %s left out: %s" % (name, err))
             continue
         runs.append(StudyRun(m.group(1), int(m.group(2)), m.group(3),
                              read_settings(path + ".settings"), cycles))
@@ -206,7 +206,7 @@ def main(argv=None):
     if args.steps is not None:
         medians, rounds = step_medians(args.dir, args.steps)
         if not medians:
-            sys.exit("pimpleStudy: no run <level>-np<N>-<setting>-r<round> "
+            sys.exit("pimple_study: no run <level>-np<N>-<setting>-r<round> "
                      "in " + args.dir)
         return write(steps_table(medians, rounds, args.settings or sorted(
             {k[2] for k in medians})) + [
@@ -215,7 +215,7 @@ def main(argv=None):
             "ranks)." % args.steps], args.out)
     runs = read_runs(args.dir, args.cycles)
     if not runs:
-        sys.exit("pimpleStudy: no completed run <level>-np<N>-<setting> in "
+        sys.exit("pimple_study: no completed run <level>-np<N>-<setting> in "
                  + args.dir)
     lines = table(runs, args.reference, args.cycles) + [
         "", "Guard columns: the measured difference as a share of what "

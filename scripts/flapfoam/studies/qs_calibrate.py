@@ -53,7 +53,7 @@ COEFFS = ("CL", "CD0", "CD1")
 
 
 def fail(message):
-    raise FlapFoamError("qsCalibrate: " + message)
+    raise FlapFoamError("qs_calibrate: " + message)
 
 
 def wing_entry(path, name):
@@ -258,7 +258,7 @@ def report(wing, rows, axes):
     def mean_z(F):
         return np.average(F[keep, 2], weights=rows.step[keep])
 
-    print("qsCalibrate: %s, body %s, %d rows t = %g to %g s, components %s"
+    print("qs_calibrate: %s, body %s, %d rows t = %g to %g s, components %s"
           % (rows.path, entry["body"][0], len(rows.time),
              rows.time[0], rows.time[-1], " ".join(axes)))
     print("fitted: CL %.8g CD0 %.8g CD1 %.8g (condition number %.3g)"

@@ -532,7 +532,7 @@ def main(argv=None):
         rows = sweep.run_all(grid_points(grid), args.np)
         wall = time.time() - start
         write_table(args.o + ".csv", rows, list(grid) + list(RESULTS))
-        print("qsSweep: %d points (%d cycles, %d steps per cycle, %d at a"
+        print("qs_sweep: %d points (%d cycles, %d steps per cycle, %d at a"
               " time) in %.1f s wall, %.3f s per run: %s.csv"
               % (len(rows), args.cycles, args.steps_per_cycle, args.np, wall,
                  np.mean([r["seconds"] for r in rows]), args.o))
@@ -544,11 +544,11 @@ def main(argv=None):
             write_table(args.o + "-hover.csv", table,
                        list(grid) + list(RESULTS) + ["evaluations"])
             for r in table:
-                print("qsSweep: %s: %s" % (", ".join(
+                print("qs_sweep: %s: %s" % (", ".join(
                     "%s %.6g" % (n, r[n]) for n in grid if n != args.hover)
                     or "hover", hover_line(args.hover, r)))
     except SweepError as e:
-        sys.exit("flapfoam.studies.qs_sweep: %s" % e)
+        sys.exit("qs_sweep: %s" % e)
 
 
 if __name__ == "__main__":
