@@ -28,8 +28,16 @@ def flight_case(tmp_path, rows=4, joints=2):
         cols += [q[:, k], 0*t, 0*t]
     dat = tmp_path / "postProcessing" / "rigidBodySimulate" / "0"
     dat.mkdir(parents=True)
-    np.savetxt(dat / "joints.dat", np.column_stack(cols), fmt="%.15g")
+    save_joints(dat / "joints.dat", np.column_stack(cols), "%.15g")
     return str(tmp_path), str(h5), dat / "joints.dat"
+
+
+def save_joints(path, rows, fmt):
+    """rows as rigidBodySimulate's joints.dat: the header, then the rows
+    (time, q_i qDot_i qDdot_i of each joint)."""
+    n = (np.shape(rows)[1] - 1)//3
+    np.savetxt(path, rows, fmt=fmt, comments="# ", header="time " + " ".join(
+        "q_%d qDot_%d qDdot_%d" % (k, k, k) for k in range(n)))
 
 
 def test_flight_data_joints_equal_and_perturbed(tmp_path):
@@ -39,7 +47,7 @@ def test_flight_data_joints_equal_and_perturbed(tmp_path):
     assert "4 rows" in text
     d = np.loadtxt(dat)
     d[-1, 1] += 1e-12
-    np.savetxt(dat, d, fmt="%.15g")
+    save_joints(dat, d, "%.15g")
     assert not rc.flight_data_joints(case)[0]
 
 
@@ -69,7 +77,7 @@ def test_authors_controller_of_a_log(tmp_path):
     dat = tmp_path / "postProcessing" / "rigidBodySimulate" / "0"
     dat.mkdir(parents=True)
     row = [0.05, 0.02, 0.1, 0, 0.03, -0.2, 0, 0.1, 0.5, 0]
-    np.savetxt(dat / "joints.dat", [row], fmt="%.17g")
+    save_joints(dat / "joints.dat", [row], "%.17g")
     want = rc.authors_pd_law(0.02, 0.03, 0.1, (0.1, -0.2, 0.5))
     entries = ", ".join("%s = %.17g" % kv for kv in want.items())
     log = tmp_path / "log"

@@ -41,7 +41,7 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 CASE = os.path.dirname(HERE)
-from flapfoam.io import flight_data
+from flapfoam.io import flight_data, run_series
 from flapfoam.io.foam_dict import multibody_coeffs
 from flapfoam.plots.plotting import cycle_axes, plt, save
 
@@ -126,10 +126,10 @@ def main():
         folder = os.path.join(base, name)
         if flight_data.find(folder) is None:
             sys.exit("plotQuasiSteady: no flight data in %s" % folder)
-        attrs, d = flight_data.load(folder)
-        model = flight_data.model_label(attrs, multibody_coeffs(
+        s = run_series.read(folder)
+        model = flight_data.model_label(s.attrs, multibody_coeffs(
             os.path.join(folder, "constant", "dynamicMeshDict")))
-        data[name] = (d["time"], d["joints/q"], model)
+        data[name] = (s.time, s.q, model)
         t, q, _ = data[name]
         wall = (" in %.2f s" % walls[name]) if name in walls else ""
         pitch = (", theta = %.4g deg" % np.degrees(q[-1, 2])

@@ -2,12 +2,12 @@
 # License
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""Plots of a body-wing drone run: flapfoam.plots.body_wing (usage there)."""
+"""Plots of a body-wing drone run: flapfoam.plots.drone -drone bodyWing (usage there)."""
 
 import sys
 
-from flapfoam.plots.body_wing import main
+from flapfoam.plots.drone import main
 from flapfoam.errors import run_tool
 
 if __name__ == "__main__":
-    sys.exit(run_tool(main))
+    sys.exit(run_tool(main, None, "bodyWing"))

@@ -2,12 +2,12 @@
 # License
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""Plots of a single-wing drone run: flapfoam.plots.single_wing (usage there)."""
+"""Plots of a single-wing drone run: flapfoam.plots.drone -drone singleWing (usage there)."""
 
 import sys
 
-from flapfoam.plots.single_wing import main
+from flapfoam.plots.drone import main
 from flapfoam.errors import run_tool
 
 if __name__ == "__main__":
-    sys.exit(run_tool(main))
+    sys.exit(run_tool(main, None, "singleWing"))

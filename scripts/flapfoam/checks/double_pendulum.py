@@ -52,6 +52,7 @@ import numpy as np
 from scipy.interpolate import CubicHermiteSpline, CubicSpline
 
 from flapfoam.errors import run_tool
+from flapfoam.io import run_series
 
 CASE = "."                  # the case folder: where it is run, or -case
 
@@ -119,25 +120,25 @@ def read_reference(name, case=CASE):
     return _header_and_data(os.path.join(case, "reference", name + ".dat"))
 
 
-def joints_file(run, case=CASE):
-    return os.path.join(
-        case, "runs", run, "postProcessing", "rigidBodySimulate", "0",
-        "joints.dat")
+def joints(run, case=CASE):
+    """The series of runs/<run> (its joints.dat: rigidBodySimulate)"""
+    return run_series.read(os.path.join(case, "runs", run))
 
 
 def read_eaba(run, case=CASE):
     """joints.dat of runs/<run> as absolute angles (dict of arrays)"""
-    c, _ = _header_and_data(joints_file(run, case))
+    s = joints(run, case)
+    q, q_dot = s.q, s.q_dot
     out = {
-        "time": c["time"],
-        "theta1": c["q_0"],
-        "theta2": c["q_0"] + c["q_1"],
-        "theta1Dot": c["qDot_0"],
-        "theta2Dot": c["qDot_0"] + c["qDot_1"],
+        "time": s.time,
+        "theta1": q[:, 0],
+        "theta2": q[:, 0] + q[:, 1],
+        "theta1Dot": q_dot[:, 0],
+        "theta2Dot": q_dot[:, 0] + q_dot[:, 1],
     }
-    if "tau_0" in c:
-        out["tau1"] = c["tau_0"]
-        out["power1"] = c["power_0"]
+    if 0 in s.prescribed:
+        out["tau1"] = s.tau[:, s.prescribed.index(0)]
+        out["power1"] = s.power[:, s.prescribed.index(0)]
     return out
 
 
@@ -329,9 +330,8 @@ def initial_state_checks(case=CASE):
             m = prescribed_metrics(run, case)
             check(f"{run}_theta2", m["theta2"] < TOL_INITIAL["atRestTheta2"],
                   m["theta2"], TOL_INITIAL["atRestTheta2"])
-            a = np.loadtxt(joints_file(run, case), comments="#", ndmin=2)
-            b = np.loadtxt(joints_file(integrator, case), comments="#",
-                           ndmin=2)
+            a = joints(run, case).joints_table()[1]
+            b = joints(integrator, case).joints_table()[1]
             d = _maxabs(a - b) if a.shape == b.shape else float("inf")
             check(f"{run}_sameAsNoStateFile", d <= TOL_INITIAL["atRestSame"],
                   d, TOL_INITIAL["atRestSame"])

@@ -4,8 +4,8 @@
 """
 Compare the multibody motion of two drone runs (eABAMeshMotion) that
 differ only in the overset stencil: each body's force of bodies.dat and
-the trajectory of joints.dat, rows matched by time (the readers of
-flapfoam.checks.check_run and flapfoam.io.tables).
+the trajectory of joints.dat, rows matched by time (read by
+flapfoam.io.run_series, joined over the restarts).
 
     flapfoam overset_motion REF CASE [-forceTol 0] [-qTol 0]
         [-columns q_0,qDot_0,q_1,qDot_1] [-bodies wing]
@@ -29,16 +29,13 @@ import sys
 import numpy as np
 
 from flapfoam.checks import check_run
-from flapfoam.errors import FlapFoamError, run_tool
-from flapfoam.io.tables import joined_table, start_folders
+from flapfoam.errors import run_tool
+from flapfoam.io import run_series
 
 
-def bodies(case, name="eABAMeshMotion"):
-    base = os.path.join(case, "postProcessing", name)
-    if not start_folders(base):
-        raise FlapFoamError("overset_motion: no %s/<time>/bodies.dat"
-                            % base)
-    return joined_table(base, "bodies.dat", keep_earlier_at_start=False)
+def tables(case):
+    """The run's eABAMeshMotion tables (a run_series.RunSeries)."""
+    return run_series.read(case, tables="eABAMeshMotion")
 
 
 def arguments(argv):
@@ -53,23 +50,22 @@ def arguments(argv):
     return ap.parse_args(argv)
 
 
-def forces(a, name, ref_name):
-    """Each body's force against the reference's; 0 if all pass, else 1."""
+def forces(a, runs, name, ref_name):
+    """Each body's force against the reference's (runs: their tables,
+    the reference's first); 0 if all pass, else 1."""
     status = 0
-    ca, A = bodies(a.ref)
-    cb, B = bodies(a.case)
-    ia, ib = check_run.match_rows(A, B)
+    A, B = runs
+    ia, ib = check_run.match_rows(A.time[:, None], B.time[:, None])
     for body in a.bodies.split(","):
         check = "%s %s force" % (name, body)
-        if len(ia) == 0 or len(ia) != len(A) or len(ib) != len(B):
+        if len(ia) == 0 or len(ia) != len(A.time) or \
+                len(ib) != len(B.time):
             status |= check_run.report(
                 False, check,
                 "rows at different times (%d common, %d and %d rows)"
-                % (len(ia), len(A), len(B)))
+                % (len(ia), len(A.time), len(B.time)))
             continue
-        comps = ["%s:F%s" % (body, c) for c in "xyz"]
-        FA = A[:, [ca.index(c) for c in comps]]
-        FB = B[:, [cb.index(c) for c in comps]]
+        FA, FB = A.bodies[body].force, B.bodies[body].force
         scale = float(np.linalg.norm(FA, axis=1).max()) + 1e-300
         rel = np.abs(FA[ia] - FB[ib]).max(axis=0)/scale
         status |= check_run.report(
@@ -83,12 +79,12 @@ def forces(a, name, ref_name):
     return status
 
 
-def trajectory(a, name, ref_name):
+def trajectory(a, runs, name, ref_name):
     """The joints' columns against the reference's (check_run's relative
-    difference with a floor); 0 if they pass, else 1."""
+    difference with a floor; runs as forces'); 0 if they pass, else 1."""
     status = 0
-    ca, A = check_run.joints(a.ref)
-    cb, B = check_run.joints(a.case)
+    ca, A = runs[0].joints_table()
+    cb, B = runs[1].joints_table()
     ia, ib = check_run.match_rows(A, B)
     if len(ia) == 0 or len(ia) != len(A) or len(ib) != len(B):
         status |= check_run.report(
@@ -115,7 +111,9 @@ def main(argv=None):
     a = arguments(argv)
     name = os.path.basename(os.path.normpath(a.case))
     ref_name = os.path.basename(os.path.normpath(a.ref))
-    return forces(a, name, ref_name) | trajectory(a, name, ref_name)
+    runs = tables(a.ref), tables(a.case)
+    return forces(a, runs, name, ref_name) | \
+        trajectory(a, runs, name, ref_name)
 
 
 if __name__ == "__main__":

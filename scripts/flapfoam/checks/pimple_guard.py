@@ -42,12 +42,12 @@ import sys
 
 import numpy as np
 
-from flapfoam.io import flight_data
+from flapfoam.io import run_series
 from flapfoam.io import solver_log
 from flapfoam.io import step_timers
 from flapfoam.harness.checklist import report
 from flapfoam.io.foam_dict import multibody_coeffs
-from flapfoam.plots.single_wing import coefficients, reference_values
+from flapfoam.plots.drone import reference_values, wing_coefficients
 from flapfoam.errors import FlapFoamError, run_tool
 
 # The guard's margins
@@ -89,20 +89,18 @@ def read_run(case, n_cycles):
     """The run's Cycles over its first n_cycles cycles."""
     ref = reference_values(multibody_coeffs(
         os.path.join(case, "constant", "dynamicMeshDict")))
-    jcols, J, bcols, B = flight_data.tables(case)
-    jc = {c: i for i, c in enumerate(jcols)}
-    t, cx, cz = coefficients(B, {c: i for i, c in enumerate(bcols)},
-                             ref.qref)
-    t0 = J[0, 0]
-    run = Cycles(case=case, t=t, cx=cx, cz=cz, x=J[:, jc["q_1"]],
-                 z=J[:, jc["q_0"]], tq=J[:, 0], t0=t0,
-                 t1=t0 + n_cycles/ref.f)
+    series = run_series.read(case)
+    t, cx, cz = wing_coefficients(series, ref.qref)
+    tq = series.time
+    t0 = tq[0]
+    run = Cycles(case=case, t=t, cx=cx, cz=cz, x=series.q[:, 1],
+                 z=series.q[:, 0], tq=tq, t0=t0, t1=t0 + n_cycles/ref.f)
     # A run of part of a cycle ends within its last step of the end
-    if len(J) > 1 and J[-1, 0] < run.t1 <= 2*J[-1, 0] - J[-2, 0]:
-        run.t1 = J[-1, 0]
-    if J[-1, 0] < run.t1*(1 - 1e-9):
+    if len(tq) > 1 and tq[-1] < run.t1 <= 2*tq[-1] - tq[-2]:
+        run.t1 = tq[-1]
+    if tq[-1] < run.t1*(1 - 1e-9):
         raise FlapFoamError("pimple_guard: %s reached t = %g s, not the end of %g "
-                            "cycle(s), %g s" % (case, J[-1, 0], n_cycles, run.t1))
+                            "cycle(s), %g s" % (case, tq[-1], n_cycles, run.t1))
     steps = solver_log.steps(case)
     sel = (steps[:, 0] > t0) & (steps[:, 0] <= run.t1*(1 + 1e-9))
     run.steps = int(sel.sum())

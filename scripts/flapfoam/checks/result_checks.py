@@ -55,7 +55,7 @@ import time
 
 import numpy as np
 
-from flapfoam.io import flight_data
+from flapfoam.io import flight_data, run_series
 from flapfoam.errors import run_tool
 
 SYNTHETIC_WING = {"CL": 1.7, "CD0": 0.25, "CD1": 2.3}
@@ -63,14 +63,15 @@ SYNTHETIC_WING = {"CL": 1.7, "CD0": 0.25, "CD1": 2.3}
 
 def flight_data_joints(case):
     """A quasi-steady run's flight data against its joints.dat."""
-    _, d = flight_data.load(case)
-    j = np.loadtxt(case + "/postProcessing/rigidBodySimulate/0/joints.dat")
-    n = d["joints/q"].shape[1]
-    h = np.column_stack([d["time"], d["joints/q"]])
+    flight = run_series.read(case)
+    table = run_series.read(case, tables="rigidBodySimulate")
+    n = flight.q.shape[1]
+    h = np.column_stack([flight.time, flight.q])
     h = np.array([[float("%.15g" % v) for v in r] for r in h])
-    cols = [0] + list(range(1, 3*n, 3))
-    same = h.shape == (len(j), n + 1) and bool((h == j[:, cols]).all())
-    bad = [k for k, v in d.items() if not np.isfinite(v[1:]).all()]
+    j = np.column_stack([table.time, table.q])
+    same = h.shape == j.shape and bool((h == j).all())
+    bad = [k for k, v in flight.arrays().items()
+           if not np.isfinite(v[1:]).all()]
     return same and not bad, (
         "flight data = joints.dat: %d rows, time and q_0..q_%d exactly (15"
         " digits), final x = q_1 = %.6g m, z = q_0 = %.6g m; non-finite: %s"
@@ -117,12 +118,12 @@ def authors_controller(case):
         return False, "no controller update in %s/log" % case
     out = {k: float(v) for k, v in
            re.findall(r"(\w+\.\w+) = ([-0-9.e+]+)", m.group(2))}
-    rows = np.loadtxt(case + "/postProcessing/rigidBodySimulate/0/joints.dat",
-                      ndmin=2)
+    rows = run_series.read(case, tables="rigidBodySimulate")
     t = float(m.group(1))
-    r = rows[np.argmin(abs(rows[:, 0] - t))]
-    # time, then q_i qDot_i qDdot_i of each joint; Pz, Px, Ry of the sphere
-    want = authors_pd_law(r[1], r[4], r[7], (r[2], r[5], r[8]))
+    k = np.argmin(abs(rows.time - t))
+    # Pz, Px, Ry of the sphere: joints 0, 1, 2
+    q, q_dot = rows.q[k], rows.q_dot[k]
+    want = authors_pd_law(q[0], q[1], q[2], (q_dot[0], q_dot[1], q_dot[2]))
     err = max(abs(out.get(k, math.inf) - v) for k, v in want.items())
     return err < 1e-12 and abs(t - 0.05) < 1e-9, (
         "t %.6g: %s; authors %s; max difference %.2e" % (t, out, want, err))

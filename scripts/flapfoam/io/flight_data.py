@@ -30,7 +30,7 @@ holds one (restarts append to it).
 
 One PASS/FAIL line per check; exit status 1 on a failure.  As a module:
 find(case), load(case) -> (attrs, {name: array}), opened(path) -> an open
-h5py.File, tables(case) -> the joints.dat and bodies.dat tables.
+h5py.File; a run's time series as one dataclass: flapfoam.io.run_series.
 
 A run writes its file without HDF5's file locks and closes it between
 steps, so it can be read while the run goes on; a read that catches the
@@ -99,10 +99,12 @@ def opened(path):
     return retried(open_whole, path)
 
 
-def load(case):
+def load(case, with_columns=False):
     """(attributes, {dataset path: array}) of a run's file: the rows time
     has (a run writes time last in a row: a dataset's row beyond them is
-    one being written, or one a killed run left half written)."""
+    one being written, or one a killed run left half written); with_columns
+    also {dataset path: its column names} (the datasets' columns
+    attribute)."""
     import h5py
     path = find(case)
     if path is None:
@@ -110,7 +112,7 @@ def load(case):
                                 " in %s" % case)
 
     def read():
-        data = {}
+        data, columns = {}, {}
         with h5py.File(path, "r") as f:
             attrs = {k: (v.decode() if isinstance(v, bytes) else str(v))
                      for k, v in f.attrs.items()}
@@ -122,11 +124,13 @@ def load(case):
             def visit(name, obj):
                 if isinstance(obj, h5py.Dataset):
                     data[name] = obj[()]
+                    if "columns" in obj.attrs:
+                        columns[name] = str(obj.attrs["columns"]).split()
             f.visititems(visit)
         if n is not None:
             data["time"] = data["time"][:n]
             data = {k: v[:n] if len(v) > n else v for k, v in data.items()}
-        return attrs, data
+        return (attrs, data, columns) if with_columns else (attrs, data)
     return retried(read, path)
 
 
@@ -141,39 +145,6 @@ def model_label(attrs, coeffs):
     return "QS: " + "; ".join(", ".join(
         "%s %.4g" % (k, float(w[k][0])) for k in ("CL", "CD0", "CD1")
         if k in w) for w in wings)
-
-
-def tables(case):
-    """The joints.dat and bodies.dat tables (columns, rows) from the run's
-    flightData.h5, or None without one.  The loads of a row are those of
-    the step that ends at its time, as in bodies.dat."""
-    if find(case) is None:
-        return None
-    _, d = load(case)
-    t = d["time"][:, None]
-    q, q_dot, q_ddot = d["joints/q"], d["joints/qDot"], d["joints/qDdot"]
-    jcols, jdata = ["time"], [t]
-    for i in range(q.shape[1]):
-        jcols += ["q_%d" % i, "qDot_%d" % i, "qDdot_%d" % i]
-        jdata += [q[:, i:i+1], q_dot[:, i:i+1], q_ddot[:, i:i+1]]
-    if "joints/tau" in d:
-        # column names tau_<q index>, as the dataset's columns
-        import h5py
-        with h5py.File(find(case), "r") as f:
-            prescribed = [c.split("_")[1]
-                          for c in f["joints/tau"].attrs["columns"].split()]
-        for k, qi in enumerate(prescribed):
-            jcols += ["tau_%s" % qi, "power_%s" % qi]
-            jdata += [d["joints/tau"][:, k:k+1], d["joints/power"][:, k:k+1]]
-    bcols, bdata = ["time"], [t]
-    bodies = sorted({k.split("/")[1] for k in d if k.startswith("bodies/")})
-    for b in bodies:
-        for name, key in (("c", "position"), ("F", "force"),
-                          ("M", "moment")):
-            for c, v in zip("xyz", d["bodies/%s/%s" % (b, key)].T):
-                bcols.append("%s:%s%s" % (b, name, c))
-                bdata.append(v[:, None])
-    return jcols, np.hstack(jdata), bcols, np.hstack(bdata)
 
 
 @dataclass

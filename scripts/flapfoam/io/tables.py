@@ -55,9 +55,10 @@ def start_folders(base):
 
 def joined_table(base, file_name, keep_earlier_at_start):
     """The rows of base/<t>/fileName of all start folders t joined: a later
-    folder replaces the rows from its start time on; its first row (the
-    start time) is dropped when keepEarlierAtStart and an earlier row
-    exists."""
+    folder replaces the rows from its start time on; an earlier row at the
+    start time is kept when keep_earlier_at_start (the later folder's row
+    there dropped) or when the later folder has no row there (the
+    flightData function object's tables write none at a restart)."""
     columns = None
     data = None
     for t0, folder in start_folders(base):
@@ -72,7 +73,9 @@ def joined_table(base, file_name, keep_earlier_at_start):
             raise FlapFoamError("plotRun: %s: columns differ from the first folder"
                                 % path)
         eps = 1e-9*max(abs(t0), 1e-300) + 1e-15
-        if keep_earlier_at_start and np.any(np.abs(data[:, 0] - t0) <= eps):
+        row_at_start = len(rows) > 0 and abs(rows[0, 0] - t0) <= eps
+        if (keep_earlier_at_start or not row_at_start) and \
+                np.any(np.abs(data[:, 0] - t0) <= eps):
             data = np.vstack([data[data[:, 0] <= t0 + eps],
                               rows[rows[:, 0] > t0 + eps]])
         else:

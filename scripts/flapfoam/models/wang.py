@@ -53,20 +53,25 @@ def wang_motion(entry):
     return evaluate
 
 
-def imposed_joints(coeffs):
-    """{joint index: wang evaluator} of the imposedMotion entries."""
+def named_joints(coeffs, wanted):
+    """{joint index: wang evaluator, its name the entry's} of the
+    imposedMotion entries for which wanted(entry)."""
     joints = {}
     for name, entry in coeffs.get("imposedMotion", {}).items():
-        if isinstance(entry, dict) and "joint" in entry:
+        if isinstance(entry, dict) and "joint" in entry and wanted(entry):
             ev = wang_motion(entry)
             ev.name = name
             joints[int(entry["joint"][0])] = ev
     return joints
 
 
+def imposed_joints(coeffs):
+    """{joint index: wang evaluator} of the imposedMotion entries."""
+    return named_joints(coeffs, lambda entry: True)
+
+
 def wang_joints(coeffs):
     """{joint index: wang evaluator} of the imposedMotion entries of type
     wang (other types skipped)."""
-    return {int(e["joint"][0]): wang_motion(e)
-            for e in coeffs.get("imposedMotion", {}).values()
-            if isinstance(e, dict) and e.get("type", [""])[0] == "wang"}
+    return named_joints(
+        coeffs, lambda entry: entry.get("type", [""])[0] == "wang")

@@ -3,9 +3,10 @@
 #     under the GNU General Public License v3 or later (COPYING).
 """
 Plots (matplotlib, Agg, set up once in backend): the plots the cases share
-(plotting), the step-timer chart (step_timers), single-wing and body-wing
-runs (single_wing, body_wing), the double pendulum (double_pendulum) and the
-closed-loop flight of controlled runs (control).  Its tools are
+(plotting), the step-timer chart (step_timers), the drones' runs (drone:
+single-wing and body-wing, each with its own panels), the double pendulum
+(double_pendulum) and the closed-loop flight of controlled runs
+(control).  Its tools are
 flapfoam plot_<module>.
 """
 

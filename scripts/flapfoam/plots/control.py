@@ -49,18 +49,18 @@ import tempfile
 
 import numpy as np
 
-from flapfoam.io import flight_data
+from flapfoam.io import run_series
 from flapfoam.harness.checklist import report
 from flapfoam.io.foam_dict import read_foam_dict
-from flapfoam.errors import run_tool
+from flapfoam.errors import FlapFoamError, run_tool
 
-# quantity: (dataset of bodies/BODY, display scale, display unit, SI unit,
-# default band [SI])
+# quantity: (series of run_series.Body, display scale, display unit, SI
+# unit, default band [SI])
 QUANTITIES = {
     "position": ("position", 1e3, "mm", "m", 0.01),
     "velocity": ("velocity", 1.0, "m/s", "m/s", 0.1),
     "orientation": ("orientation", 180/math.pi, "deg", "rad", 0.05),
-    "angularVelocity": ("angularVelocity", 180/math.pi, "deg/s", "rad/s",
+    "angularVelocity": ("angular_velocity", 180/math.pi, "deg/s", "rad/s",
                         1.0),
 }
 
@@ -142,13 +142,16 @@ class Term:
         _, self.scale, self.unit, self.si, self.default_band = \
             QUANTITIES[self.quantity]
 
-    def measure(self, data):
-        """The measured quantity at every row of the flight data."""
-        key = "bodies/%s/%s" % (self.body, QUANTITIES[self.quantity][0])
-        if key not in data:
-            raise ControlPlotError("%s: no dataset %s in the flight data"
-                                   % (self.label, key))
-        v = np.asarray(data[key], dtype=float)
+    def measure(self, series):
+        """The measured quantity at every row of the flight data (a
+        run_series.RunSeries)."""
+        body = series.bodies.get(self.body)
+        v = getattr(body, QUANTITIES[self.quantity][0], None)
+        if v is None:
+            raise ControlPlotError("%s: no dataset bodies/%s/%s in the flight"
+                                   " data" % (self.label, self.body,
+                                              self.quantity))
+        v = np.asarray(v, dtype=float)
         if self.quantity != "orientation":
             return v[:, self.component]
         # R row-major xx xy xz yx yy yz zx zy zz; Tait-Bryan z-y'-x''
@@ -184,26 +187,23 @@ class Run:
     quantities and its loops' outputs."""
 
     def __init__(self, case):
-        import h5py
         self.case = case
         self.name = os.path.basename(os.path.normpath(case))
         self.controller, self.terms = controlled_terms(case)
         try:
-            _, data = flight_data.load(case)
-            with h5py.File(flight_data.find(case), "r") as f:
-                columns = f["control"].attrs["columns"].split() \
-                    if "control" in f else []
-        except (OSError, FileNotFoundError) as e:
+            series = run_series.read(case)
+        except FlapFoamError as e:
             raise ControlPlotError("%s: cannot read its flight data: %s"
                                    % (case, e))
-        if len(data["time"]) < 2:
+        if len(series.time) < 2:
             raise ControlPlotError("%s: fewer than 2 rows of flight data"
                                    % case)
-        self.t = np.asarray(data["time"], dtype=float)
-        self.measures = {s.label: s.measure(data) for s in self.terms}
+        self.t = np.asarray(series.time, dtype=float)
+        self.measures = {s.label: s.measure(series) for s in self.terms}
         self.errors = {s.label: self.measures[s.label] - s.set_point(self.t)
                        for s in self.terms}
-        control = data.get("control", np.zeros((len(self.t), 0)))
+        columns, control = series.other.get(
+            "control", ([], np.zeros((len(self.t), 0))))
         self.control = {c: control[:, i] for i, c in enumerate(columns)}
         self.loops = [c[:-len(".output")] for c in columns
                       if c.endswith(".output")]

@@ -48,7 +48,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from flapfoam.io import flight_data
+from flapfoam.io import flight_data, run_series
 from flapfoam.plots.plotting import cycle_axes, plt, save
 from flapfoam.io.tables import joined_table
 from flapfoam.errors import FlapFoamError, run_tool
@@ -79,9 +79,11 @@ class Flight:
 
 def read_flight(case, f=20.0):
     """The flight data of a run folder."""
-    attrs, d = flight_data.load(case)
-    c = d.get("coefficients/wing", np.zeros((len(d["time"]), 3)))
-    return Flight(d["time"], d["joints/q"], c, f, attrs)
+    s = run_series.read(case)
+    wing = s.bodies.get("wing")
+    c = wing.coefficients if wing and wing.coefficients is not None \
+        else np.zeros((len(s.time), 3))
+    return Flight(s.time, s.q, c, f, s.attrs)
 
 
 def at_cycle_ends(t, y, f):

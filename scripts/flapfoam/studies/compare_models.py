@@ -24,7 +24,7 @@ import os
 
 import numpy as np
 
-from flapfoam.io import flight_data
+from flapfoam.io import run_series
 from flapfoam.plots.plotting import cycle_axes, plt, save, shade_downstrokes
 from flapfoam.errors import FlapFoamError, run_tool
 
@@ -32,15 +32,15 @@ from flapfoam.errors import FlapFoamError, run_tool
 def run(case, body):
     """time, q, qDot, coefficients of body, frequency of a run."""
     try:
-        attrs, d = flight_data.load(case)
-    except (OSError, FileNotFoundError) as e:
+        s = run_series.read(case)
+    except FlapFoamError as e:
         raise FlapFoamError("compare_models: %s: %s" % (case, e))
-    key = "coefficients/%s" % body
-    if key not in d:
-        raise FlapFoamError("compare_models: %s: no %s in its flight data (bodies: %s)"
-                            % (case, key, " ".join(sorted(
-                                k.split("/")[1] for k in d if k.startswith("coeff")))))
-    return d["time"], d["joints/q"], d["joints/qDot"], d[key], attrs
+    if body not in s.bodies or s.bodies[body].coefficients is None:
+        raise FlapFoamError("compare_models: %s: no coefficients/%s in its flight data (bodies: %s)"
+                            % (case, body, " ".join(sorted(
+                                b for b, v in s.bodies.items()
+                                if v.coefficients is not None))))
+    return s.time, s.q, s.q_dot, s.bodies[body].coefficients, s.attrs
 
 
 def cycle_means(t, C, period):

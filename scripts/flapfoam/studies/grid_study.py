@@ -37,10 +37,10 @@ import sys
 import numpy as np
 
 from flapfoam.plots.backend import pyplot
-from flapfoam.io import flight_data
+from flapfoam.io import run_series
 from flapfoam.io.foam_dict import multibody_coeffs
 from flapfoam.checks.pimple_guard import read_run
-from flapfoam.plots.single_wing import reference_values
+from flapfoam.plots.drone import reference_values
 from flapfoam.models import wing_geometry as geo
 from flapfoam.errors import FlapFoamError, run_tool
 
@@ -84,11 +84,11 @@ def pitching_moment(case, t0, t1):
     q_ref c_mean (rows: the load of the flow at the previous row's time)."""
     ref = reference_values(multibody_coeffs(
         os.path.join(case, "constant", "dynamicMeshDict")))
-    jcols, J, bcols, B = flight_data.tables(case)
-    bc = {c: i for i, c in enumerate(bcols)}
-    phi = np.interp(B[:-1, 0], J[:, 0], J[:, jcols.index("q_2")])
-    m = -np.sin(phi)*B[1:, bc["wing:Mx"]] + np.cos(phi)*B[1:, bc["wing:My"]]
-    t = B[:-1, 0]
+    series = run_series.read(case)
+    phi = series.q[:-1, 2]
+    M = series.bodies["wing"].moment
+    m = -np.sin(phi)*M[1:, 0] + np.cos(phi)*M[1:, 1]
+    t = series.time[:-1]
     sel = (t >= t0) & (t <= t1)
     return t[sel], m[sel]/(ref.qref*geo.CBAR)
 

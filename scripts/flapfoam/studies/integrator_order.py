@@ -48,7 +48,7 @@ import numpy as np
 from flapfoam.models.chain_reference import Chain, Harmonic
 from flapfoam.io.foam_dict import multibody_coeffs, read_state, set_entry
 from flapfoam.models.quasi_steady import SingleWingDrone
-from flapfoam.io.tables import read_table
+from flapfoam.io import run_series
 from flapfoam.errors import run_tool
 from flapfoam.paths import project_dir
 
@@ -142,7 +142,7 @@ def set_up(run):
 
 
 def simulate(run):
-    """Set up and run; the path of its joints.dat."""
+    """Set up and run; the run's folder."""
     set_up(run)
     with open(os.path.join(run.path, "log"), "w") as log:
         rc = subprocess.run(["rigidBodySimulate"] + list(run.system.options),
@@ -151,8 +151,7 @@ def simulate(run):
     if rc != 0:
         raise RuntimeError("rigidBodySimulate exit %d (see %s/log)"
                            % (rc, run.path))
-    return os.path.join(run.path, "postProcessing", "rigidBodySimulate",
-                        "0", "joints.dat")
+    return run.path
 
 
 def chain_of(system):
@@ -202,16 +201,15 @@ def reference(system):
     return ref[:, 0], ref[:, [1, 2]]
 
 
-def observed(system, path):
-    """The run's quantities in the reference's columns, from its joints.dat:
-    the links' absolute angles (q_j summed along the chain), or the drone's
-    x (q_1, its Px joint) and z (q_0, Pz)."""
-    columns, rows = read_table(path)
-    q = [columns.index("q_%d" % j) for j in range(len(columns))
-         if "q_%d" % j in columns]
+def observed(system, case):
+    """The run's quantities in the reference's columns, from its joints.dat
+    (rows at the write times): the links' absolute angles (q_j summed
+    along the chain), or the drone's x (q_1, its Px joint) and z (q_0,
+    Pz)."""
+    rows = run_series.read(case, tables="rigidBodySimulate")
     if system.unit == "rad":
-        return rows[:, 0], np.cumsum(rows[:, q], axis=1)
-    return rows[:, 0], rows[:, [q[1], q[0]]]
+        return rows.time, np.cumsum(rows.q, axis=1)
+    return rows.time, rows.q[:, [1, 0]]
 
 
 def error(run):

@@ -44,6 +44,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from flapfoam.io import run_series
 from flapfoam.io.flight_data import find
 from flapfoam.io.foam_dict import multibody_coeffs
 from flapfoam.models.quasi_steady import Wing, vec
@@ -83,8 +84,9 @@ class FlightRows:
     """The rows of a run's flight data used in the fit: the wing body's
     motion (body frame origin) and the fluid force on it."""
 
-    KEYS = ("orientation", "position", "velocity", "angularVelocity",
-            "force")
+    KEYS = {"orientation": "orientation", "position": "position",
+            "velocity": "velocity", "angularVelocity": "angular_velocity",
+            "force": "force"}
 
     def __init__(self, case, body, centre_of_mass, window):
         path = find(case)
@@ -92,10 +94,7 @@ class FlightRows:
             fail("no postProcessing/flightData/*/flightData.h5 in %s (a CFD"
                  " run's flight data)" % case)
         self.path = path
-        try:
-            t, d = self.read(body)
-        except OSError as e:
-            fail("%s: cannot read: %s" % (path, e))
+        t, d = self.read(case, body)
         self.select(t, d, window)
         E = d["orientation"][self.rows].reshape(-1, 3, 3)
         arm = E @ centre_of_mass
@@ -107,19 +106,22 @@ class FlightRows:
         self.time = t[self.rows]
         self.step = t[self.rows] - t[self.rows - 1]
 
-    def read(self, body):
-        """(time, {key: rows}) of the body's datasets."""
-        import h5py
-        with h5py.File(self.path, "r") as f:
-            missing = ["bodies/%s/%s" % (body, k) for k in self.KEYS
-                       if "bodies/%s/%s" % (body, k) not in f]
-            if missing or "time" not in f:
-                fail("%s: no %s (the motion and fluid force of body %s);"
-                     " its bodies: %s"
-                     % (self.path, ", ".join(missing or ["time"]), body,
-                        ", ".join(f.get("bodies", {}).keys()) or "none"))
-            return f["time"][()], {k: f["bodies/%s/%s" % (body, k)][()]
-                                   for k in self.KEYS}
+    def read(self, case, body):
+        """(time, {key: rows}) of the body's series."""
+        try:
+            series = run_series.read(case)
+        except FlapFoamError as e:
+            fail(str(e))
+        b = series.bodies.get(body, run_series.Body())
+        d = {k: getattr(b, f) for k, f in self.KEYS.items()}
+        missing = ["bodies/%s/%s" % (body, k) for k, v in d.items()
+                   if v is None]
+        if missing:
+            fail("%s: no %s (the motion and fluid force of body %s);"
+                 " its bodies: %s"
+                 % (self.path, ", ".join(missing), body,
+                    ", ".join(series.bodies) or "none"))
+        return series.time, d
 
     def select(self, t, d, window):
         """self.rows: the rows after the initial state and -skip steps, up

@@ -60,6 +60,7 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
+from flapfoam.io import run_series
 from flapfoam.io.foam_dict import read_foam_dict, set_entry
 from flapfoam.errors import run_tool
 from flapfoam.paths import project_path
@@ -295,12 +296,8 @@ class Sweep:
                              " %s/log" % (name, values, rc, "" if rc else
                                           " (no free Pz and Px joints)",
                                           case))
-        joints = os.path.join(case, "postProcessing", "rigidBodySimulate",
-                              "0", "joints.dat")
-        with open(joints) as j:
-            names = j.readline().split()[1:]
-        row = point_results(np.loadtxt(joints, ndmin=2), names, heave, surge,
-                           self.model.g)
+        names, data = run_series.read(case).joints_table()
+        row = point_results(data, names, heave, surge, self.model.g)
         row["seconds"] = seconds
         if not self.keep:
             shutil.rmtree(case)
