@@ -196,7 +196,8 @@ def test_scenario_runs_in_order_then_checks(tmp_path, capsys):
     assert out[2] == "PASS [s] the output: second"
     assert out[3] == "PASS [s] all good"
     assert out[4] == "PASS [s] . and . byte for byte: value"
-    assert out[5].startswith("PASS [s] . against %s: all rows (2)" % ref)
+    assert out[5].startswith("PASS [s] . against %s: joints.dat all rows (2)"
+                             % ref)
     assert (tmp_path / "runs" / "s" / "log.2").read_text() == "second\n"
 
 
@@ -212,8 +213,9 @@ def test_scenario_failures(tmp_path, capsys):
     assert out[2] == "FAIL [s] not good"
     assert out[3] == "FAIL [s] . and ../ref byte for byte: differ or " \
         "missing: value"
-    assert out[4].startswith("FAIL [s] . against %s: all rows (2): max "
-                             "relative difference 4.76e-02 (tol 1e-06)" % ref)
+    assert out[4].startswith("FAIL [s] . against %s: joints.dat all rows "
+                             "(2): max relative difference 4.76e-02 "
+                             "(tol 1e-06)" % ref)
 
 
 def test_failed_run_stops_the_scenario(tmp_path, capsys):
