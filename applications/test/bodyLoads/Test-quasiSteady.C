@@ -282,12 +282,13 @@ TEST(Errors, quasiSteadyBadEntries)
     ({
         {"span (0 2 0);", {"span", "unit vector"}},
         {"chord (0 1 0);", {"span", "not normal to each other"}},
-        {"length 0;", {"length", "> 0"}},
-        {"nStrips 0;", {"nStrips", ">= 1"}},
-        {"rho -1;", {"rho", "> 0"}},
+        {"length 0;", {"length 0:", "a value > 0 is allowed"}},
+        {"nStrips 0;", {"nStrips 0:", "a value >= 1 is allowed"}},
+        {"rho -1;", {"rho -1:", "a value > 0 is allowed"}},
+        {"meanChord 0;", {"meanChord 0:", "a value > 0 is allowed"}},
         {"body ghost;", {"ghost", "not a body of the tree"}},
         {"phse 1;", {"Unknown key 'phse'", "nStrips"}},
-        {"chordDistribution elliptic;", {"elliptic", "semiElliptic or table"}},
+        {"chordDistribution elliptic;", {"chordDistribution elliptic unknown", "2(semiElliptic table)"}},
         {"type quasiStatic;", {"quasiStatic", "quasiSteady"}}
     });
     for (const auto& b : bad)

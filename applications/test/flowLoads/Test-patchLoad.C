@@ -149,7 +149,7 @@ TEST(Errors, patchLoadBadInput)
     // Kinematic p with a density field
     expectError(loads("rho rho;"), {"kinematic", "rhoInf"});
 
-    expectIOError(loads("rhoInf 0;"), {"rhoInf", "positive"});
+    expectIOError(loads("rhoInf 0;"), {"rhoInf 0:", "a value > 0 is allowed"});
 
     // Patches that match nothing, on a body and a merged body
     expectIOError

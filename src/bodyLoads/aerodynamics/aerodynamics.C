@@ -70,6 +70,13 @@ Foam::bodyLoads::aerodynamics::aerodynamics
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+const Foam::wordList& Foam::bodyLoads::aerodynamics::keys()
+{
+    static const wordList k({"aerodynamics"});
+    return k;
+}
+
+
 void Foam::bodyLoads::aerodynamics::loads
 (
     const RBD::rigidBodyModelState& state,

@@ -47,6 +47,13 @@ Foam::bodyLoad::bodyLoad
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+const Foam::wordList& Foam::bodyLoad::keys()
+{
+    static const wordList k({"bodyLoad", "fluidLoad"});
+    return k;
+}
+
+
 Foam::label Foam::bodyLoad::treeBodyID
 (
     const RBD::rigidBodyModel& model,

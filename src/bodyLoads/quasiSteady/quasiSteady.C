@@ -24,6 +24,7 @@ License
 #include "quasiSteady.H"
 #include "Tuple2.H"
 #include "dictionaryKeys.H"
+#include "dictionaryRead.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -38,6 +39,29 @@ namespace wingAerodynamicsModels
 }
 
 
+const Foam::Enum
+<
+    Foam::wingAerodynamicsModels::quasiSteady::distributionType
+>
+Foam::wingAerodynamicsModels::quasiSteady::distributionNames
+({
+    { distributionType::semiElliptic, "semiElliptic" },
+    { distributionType::table, "table" }
+});
+
+
+const Foam::wordList& Foam::wingAerodynamicsModels::quasiSteady::keys()
+{
+    static const wordList k
+    ({
+        "type", "body", "root", "span", "chord", "length",
+        "chordDistribution", "meanChord", "chords", "rho", "CL", "CD0",
+        "CD1", "nStrips", "wind"
+    });
+    return k;
+}
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::wingAerodynamicsModels::quasiSteady::checkKeys
@@ -45,13 +69,7 @@ void Foam::wingAerodynamicsModels::quasiSteady::checkKeys
     const dictionary& dict
 )
 {
-    const wordList keys
-    ({
-        "type", "body", "root", "span", "chord", "length",
-        "chordDistribution", "meanChord", "chords", "rho", "CL", "CD0",
-        "CD1", "nStrips", "wind"
-    });
-    dictionaryKeys(keys).named("quasiSteady wing " + dict.dictName())
+    dictionaryKeys(keys()).named("quasiSteady wing " + dict.dictName())
         .check(dict);
 }
 
@@ -81,31 +99,23 @@ Foam::scalarField Foam::wingAerodynamicsModels::quasiSteady::chords
     const scalar R
 )
 {
-    const word distribution(dict.get<word>("chordDistribution"));
-    const word other(distribution == "table" ? "meanChord" : "chords");
+    const distributionType distribution
+    (
+        readChoice(dict, "chordDistribution", distributionNames)
+    );
+    const bool semiElliptic = distribution == distributionType::semiElliptic;
+    const word other(semiElliptic ? "chords" : "meanChord");
     if (dict.found(other))
     {
         FatalIOErrorInFunction(dict)
             << other << " does not belong to chordDistribution "
-            << distribution << exit(FatalIOError);
+            << distributionNames[distribution] << exit(FatalIOError);
     }
 
-    if (distribution == "semiElliptic")
+    if (semiElliptic)
     {
-        const scalar cbar = dict.get<scalar>("meanChord");
-        if (cbar <= 0)
-        {
-            FatalIOErrorInFunction(dict)
-                << "meanChord " << cbar << ": a positive length is required"
-                << exit(FatalIOError);
-        }
+        const scalar cbar = readAllowed(dict, "meanChord", allowed::above(0.0));
         return (4*cbar/constant::mathematical::pi)*sqrt(1 - sqr(r/R));
-    }
-    if (distribution != "table")
-    {
-        FatalIOErrorInFunction(dict)
-            << "chordDistribution " << distribution
-            << ": semiElliptic or table is allowed" << exit(FatalIOError);
     }
 
     const List<Tuple2<scalar, scalar>> table
@@ -188,7 +198,7 @@ Foam::wingAerodynamicsModels::quasiSteady::quasiSteady
     wingAerodynamics(name, model, dict),
     span_(readUnit(dict, "span")),
     chord_(readUnit(dict, "chord")),
-    rho_(dict.get<scalar>("rho")),
+    rho_(readAllowed(dict, "rho", allowed::above(0.0))),
     CL_(dict.getOrDefault<scalar>("CL", 1.2)),
     CD0_(dict.getOrDefault<scalar>("CD0", 0.4)),
     CD1_(dict.getOrDefault<scalar>("CD1", 1.0)),
@@ -203,15 +213,9 @@ Foam::wingAerodynamicsModels::quasiSteady::quasiSteady
             << (span_ & chord_) << "): |span.chord| <= 1e-6 is required"
             << exit(FatalIOError);
     }
-    const scalar R = dict.get<scalar>("length");
-    const label N = dict.getOrDefault<label>("nStrips", 40);
-    if (R <= 0 || N < 1 || rho_ <= 0)
-    {
-        FatalIOErrorInFunction(dict)
-            << "length " << R << ", nStrips " << N << ", rho " << rho_
-            << ": length > 0, nStrips >= 1 and rho > 0 are required"
-            << exit(FatalIOError);
-    }
+    const scalar R = readAllowed(dict, "length", allowed::above(0.0));
+    const label N =
+        readAllowed(dict, "nStrips", 40, allowed::atLeast<label>(1));
 
     scalarField r(N);
     forAll(r, k)

@@ -23,6 +23,7 @@ License
 
 #include "controlLoop.H"
 #include "dictionaryKeys.H"
+#include "dictionaryRead.H"
 
 // * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * * //
 
@@ -56,7 +57,7 @@ Foam::controlLoop::controlLoop
     name_(dict.dictName()),
     entry_(dict.get<word>("entry")),
     parameter_(dict.get<word>("parameter")),
-    saturation_(saturationNames.get("saturation", dict)),
+    saturation_(readChoice(dict, "saturation", saturationNames)),
     min_(dict.get<scalar>("min")),
     max_(dict.get<scalar>("max")),
     bias_(dict.getOrDefault<scalar>("bias", 0)),

@@ -23,6 +23,7 @@ License
 
 #include "controlTerm.H"
 #include "dictionaryKeys.H"
+#include "dictionaryRead.H"
 #include "treeBody.H"
 
 // * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * * //
@@ -42,6 +43,15 @@ Foam::controlTerm::derivativeNames
 ({
     { derivativeType::state, "state" },
     { derivativeType::mean, "mean" }
+});
+
+
+const Foam::Enum<Foam::vector::components>
+Foam::controlTerm::componentNames
+({
+    { vector::X, "x" },
+    { vector::Y, "y" },
+    { vector::Z, "z" }
 });
 
 
@@ -120,13 +130,13 @@ Foam::controlTerm::controlTerm
     model_(model),
     body_(dict.get<word>("body")),
     bodyID_(treeBodyID(model, body_, dict)),
-    quantity_(quantityNames.get("quantity", dict)),
-    component_(0),
+    quantity_(readChoice(dict, "quantity", quantityNames)),
+    component_(readChoice(dict, "component", componentNames)),
     setPoint_(Function1<scalar>::New("setPoint", dict)),
     rateSetPoint_(nullptr),
     derivative_
     (
-        derivativeNames.getOrDefault("derivative", dict, derivativeType::state)
+        readChoice(dict, "derivative", derivativeNames, derivativeType::state)
     ),
     Kp_(dict.getOrDefault<scalar>("Kp", 0)),
     Ki_(dict.getOrDefault<scalar>("Ki", 0)),
@@ -137,16 +147,6 @@ Foam::controlTerm::controlTerm
     previous_(0)
 {
     checkDictionaryKeys(dict, keys());
-
-    const word comp(dict.get<word>("component"));
-    const wordList xyz({"x", "y", "z"});
-    if (!xyz.found(comp))
-    {
-        FatalIOErrorInFunction(dict)
-            << "component " << comp << " of " << dict.name()
-            << ": allowed are " << flatOutput(xyz) << exit(FatalIOError);
-    }
-    component_ = direction(xyz.find(comp));
 
     const bool hasRate =
         quantity_ == quantityType::position

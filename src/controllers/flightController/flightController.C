@@ -23,6 +23,7 @@ License
 
 #include "flightController.H"
 #include "dictionaryKeys.H"
+#include "dictionaryRead.H"
 #include "Pstream.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -61,16 +62,10 @@ Foam::flightController::flightController
     imposedMotionList& motions
 )
 :
-    update_(updateNames.get("update", dict)),
+    update_(readChoice(dict, "update", updateNames)),
     cycleOf_(),
     rate_(0),
-    blend_
-    (
-        dict.getCheckOrDefault<scalar>
-        (
-            "blend", 0.25, [](scalar b){ return b >= 0 && b <= 1; }
-        )
-    ),
+    blend_(readAllowed(dict, "blend", 0.25, allowed::closed(0.0, 1.0))),
     log_(dict.getOrDefault<Switch>("log", true)),
     tLast_(0),
     tNext_(-1),
@@ -93,18 +88,24 @@ Foam::flightController::flightController
     }
     else
     {
-        rate_ = dict.getCheck<scalar>("rate", scalarMinMax::ge(SMALL));
+        rate_ = readAllowed(dict, "rate", allowed::above(0.0));
     }
 }
 
 
 // * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * * //
 
-void Foam::flightController::checkKeys(const dictionary& dict) const
+Foam::wordList Foam::flightController::allowedKeys() const
 {
     wordList allowed(keys());
     allowed.append(typeKeys());
-    checkDictionaryKeys(dict, allowed);
+    return allowed;
+}
+
+
+void Foam::flightController::checkKeys(const dictionary& dict) const
+{
+    checkDictionaryKeys(dict, allowedKeys());
 }
 
 

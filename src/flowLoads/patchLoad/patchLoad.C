@@ -21,6 +21,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "patchLoad.H"
+#include "dictionaryRead.H"
 #include "addToRunTimeSelectionTable.H"
 #include "volFields.H"
 #include "surfaceFields.H"
@@ -175,14 +176,7 @@ Foam::bodyLoads::patchLoad::patchLoad
 {
     if (rhoName_ == "rhoInf")
     {
-        rhoInf_ = dict.get<scalar>("rhoInf");
-
-        if (rhoInf_ <= 0)
-        {
-            FatalIOErrorInFunction(dict)
-                << "rhoInf " << rhoInf_ << ": must be positive"
-                << exit(FatalIOError);
-        }
+        rhoInf_ = readAllowed(dict, "rhoInf", allowed::above(0.0));
     }
 
     readBodies(dict);
@@ -190,6 +184,13 @@ Foam::bodyLoads::patchLoad::patchLoad
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+const Foam::wordList& Foam::bodyLoads::patchLoad::keys()
+{
+    static const wordList k({"rho", "rhoInf", "p", "U"});
+    return k;
+}
+
 
 void Foam::bodyLoads::patchLoad::loads
 (
