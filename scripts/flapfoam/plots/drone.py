@@ -125,11 +125,10 @@ class Run:
 @dataclass
 class Drone:
     """What differs between the drones' plots (the per-case hook): the
-    name, the x-z path (path(run) -> x, z, xDot, zDot) and its axis
-    labels and title,
-    the coefficients plotted (coefficients(run) -> {body: (C_xI, C_zI) at
-    the load times}, {} for none) and the extra figures ({PNG name:
-    panel(run, out)})."""
+    name, the x-z path (path(run) -> x, z, xDot, zDot) with its axis
+    labels and title, the coefficients plotted (coefficients(run) ->
+    {body: (C_xI, C_zI) at the load times}, {} for none) and the extra
+    figures ({PNG name: panel(run, out)})."""
     name: str
     path: object
     path_labels: tuple
@@ -378,9 +377,9 @@ def prescribed_joints(run, out):
 
 
 def plot(run, drone, out):
-    """Every figure of the run in out; the names written, or the exit
-    status of a failed step-timer chart."""
-    curves = drone.coefficients(run)        # before any figure: may fail
+    """Every figure of the run but the step timers' in out (made once the
+    drone's coefficients are there); the names written."""
+    curves = drone.coefficients(run)        # may fail: before any figure
     os.makedirs(out, exist_ok=True)
     written = ["trajectory"]
     trajectory(run, drone, out)
