@@ -22,6 +22,8 @@ License
 
 #include "eABAMeshMotion.H"
 #include "bodyLoad.H"
+#include "patchLoad.H"
+#include "aerodynamics.H"
 #include "addToRunTimeSelectionTable.H"
 #include "polyMesh.H"
 #include "stepTimers.H"
@@ -141,11 +143,7 @@ void Foam::eABAMeshMotion::readBackground()
     }
 
     const dictionary& dict = coeffDict().subDict("background");
-    RBD::eABAMotion::checkKeys
-    (
-        dict,
-        wordList({"cellZone", "body", "components"})
-    );
+    RBD::eABAMotion::checkKeys(dict, backgroundKeys());
 
     // The model's bodyID() of an unknown name is a FatalError of its table:
     // the name is checked here first, with the file and the key
@@ -190,24 +188,20 @@ void Foam::eABAMeshMotion::readBackground()
 }
 
 
-Foam::wordList Foam::eABAMeshMotion::meshKeys() const
+Foam::wordList Foam::eABAMeshMotion::keys(const bool topLevel)
 {
-    // The keys of the motion solver and of the loads (bodyLoad types:
-    // patchLoad, aerodynamics); at the top level of dynamicMeshDict also
-    // the keys of the dynamic mesh
-    wordList keys(RBD::eABAMotion::keys());
-    keys.append
-    (
-        wordList
-        ({
-            "bodyLoad", "fluidLoad", "background",
-            "rho", "rhoInf", "p", "U", "aerodynamics"
-        })
-    );
+    // The keys of the model, of the loads (bodyLoad's and its types':
+    // patchLoad, aerodynamics) and of the motion solver; at the top level
+    // of dynamicMeshDict also those of the dynamic mesh
+    wordList k(RBD::eABAMotion::keys());
+    k.append(bodyLoad::keys());
+    k.append(bodyLoads::patchLoad::keys());
+    k.append(bodyLoads::aerodynamics::keys());
+    k.append(word("background"));
 
-    if (!found(typeName + "Coeffs"))
+    if (topLevel)
     {
-        keys.append
+        k.append
         (
             wordList
             ({
@@ -217,7 +211,14 @@ Foam::wordList Foam::eABAMeshMotion::meshKeys() const
         );
     }
 
-    return keys;
+    return k;
+}
+
+
+const Foam::wordList& Foam::eABAMeshMotion::backgroundKeys()
+{
+    static const wordList k({"cellZone", "body", "components"});
+    return k;
 }
 
 
@@ -295,7 +296,10 @@ Foam::eABAMeshMotion::eABAMeshMotion
     tau_(model_.nDoF(), Zero),
     fx_(model_.nBodies(), Zero)
 {
-    RBD::eABAMotion::checkKeys(coeffDict(), meshKeys());
+    RBD::eABAMotion::checkKeys
+    (
+        coeffDict(), keys(!found(typeName + "Coeffs"))
+    );
     readBodies();
     readBackground();
     load_ = bodyLoad::New(mesh, model_, coeffDict(), "patchLoad");

@@ -22,6 +22,7 @@ License
 
 #include "multibodyDict.H"
 #include "eABAMotion.H"
+#include "aerodynamics.H"
 #include "StringStream.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -182,7 +183,8 @@ void Foam::multibodyDict::checkKeys() const
 
     // The model's keys and those of the loads it can take without a mesh
     wordList modelKeys(RBD::eABAMotion::keys());
-    modelKeys.append(wordList({"bodyLoad", "fluidLoad", "aerodynamics"}));
+    modelKeys.append(bodyLoad::keys());
+    modelKeys.append(bodyLoads::aerodynamics::keys());
 
     // The dictionary of the mesh motion solver that holds the model, if any
     const bool inCoeffs = location_.ends_with(coeffsName);
