@@ -4,8 +4,9 @@
 """
 Studies that run or read many runs: the integrators' order
 (integrator_order), the grid study (grid_study), the PIMPLE study's table
-(pimple_study), the quasi-steady model's sweeps, calibration and integrators
-(qs_sweep, qs_calibrate, qs_integrators), the controller's gain sweeps
+(pimple_study), the quasi-steady model's sweeps, calibration, integrators and
+the drones' flights on one figure (qs_sweep, qs_calibrate, qs_integrators,
+qs_flights), the controller's gain sweeps
 (gain_sweep), CFD against QS (compare_models), the production ascent
 (ascent) and bench/forwardDynamics' table (forward_dynamics_table).
 """

@@ -6,23 +6,25 @@
 The paper's flights with the quasi-steady wings: the single-wing drone
 (SW), the body-wing drone (BW) and its variants Tz and TzRy, N cycles
 each (Allrun -model quasiSteady of both cases, no mesh), on one figure.
+A figure of two cases, so it lives here, where the cases meet, and the
+bench that draws it is bench/quasiSteady (stage flights).
 
-    scripts/plotQuasiSteady.py [-cycles N] [-dir DIR] [-o OUTDIR] [-noRun]
+    flapfoam qs_flights [-cycles N] [-dir DIR] [-o PREFIX] [-noRun]
 
-Runs, one after the other, in DIR (default runs/quasiSteadyPaper of this
-case) the folders sw, bw, bw-Tz, bw-TzRy:
+Runs, one after the other, in DIR (default
+${TMPDIR:-/tmp}/flapFoam-qsFlights) the folders sw, bw, bw-Tz, bw-TzRy:
 
     cases/singleWingDrone/Allrun -model quasiSteady -cycles N -clean ...
     cases/bodyWingDrone/Allrun   -model quasiSteady -cycles N -clean
                                  [-variant Tz | -variant TzRy] ...
 
-(-noRun: only read them), and writes in OUTDIR (default DIR):
+(-noRun: only read them), and writes (default PREFIX DIR/qsFlights):
 
-  quasiSteadyTrajectories.png  x(t) and z(t) [mm] of the four against t f
-                               (x = q_1, z = q_0: the surge link of SW, the
-                               body's centre of mass of BW);
-  quasiSteadyBodyPitch.png     the body pitch theta = q_2 [deg] of BW and
-                               TzRy (Tz holds it at zero);
+  PREFIX-trajectories.png  x(t) and z(t) [mm] of the four against t f
+                           (x = q_1, z = q_0: the surge link of SW, the
+                           body's centre of mass of BW);
+  PREFIX-bodyPitch.png     the body pitch theta = q_2 [deg] of BW and TzRy
+                           (Tz holds it at zero);
 
 each legend with the coefficients that flew (each case's defaults: fitted
 on its CFD).
@@ -39,19 +41,19 @@ import time
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-CASE = os.path.dirname(HERE)
+from flapfoam.errors import run_tool
 from flapfoam.io import flight_data, run_series
 from flapfoam.io.foam_dict import multibody_coeffs
+from flapfoam.paths import project_path
 from flapfoam.plots.plotting import cycle_axes, plt, save
 
-# name, case folder, Allrun options, legend label, line style (Tz dashed:
-# its z(t) lies on TzRy's)
+# name, case (cases/<case>), Allrun options, legend label, line style (Tz
+# dashed: its z(t) lies on TzRy's)
 RUNS = [
-    ("sw", "../singleWingDrone", [], "SW (Tx, Tz)", "-"),
-    ("bw", ".", [], "BW (Tx, Tz, Ry)", "-"),
-    ("bw-Tz", ".", ["-variant", "Tz"], "BW Tz", "--"),
-    ("bw-TzRy", ".", ["-variant", "TzRy"], "BW TzRy", "-"),
+    ("sw", "singleWingDrone", [], "SW (Tx, Tz)", "-"),
+    ("bw", "bodyWingDrone", [], "BW (Tx, Tz, Ry)", "-"),
+    ("bw-Tz", "bodyWingDrone", ["-variant", "Tz"], "BW Tz", "--"),
+    ("bw-TzRy", "bodyWingDrone", ["-variant", "TzRy"], "BW TzRy", "-"),
 ]
 
 FREQUENCY = 20.0        # [Hz], the flapping entry of both cases
@@ -62,7 +64,7 @@ def run_all(base, cycles):
     walls = {}
     for name, case, options, _, _ in RUNS:
         folder = os.path.join(base, name)
-        command = [os.path.join(CASE, case, "Allrun"), "-model",
+        command = [project_path("cases", case, "Allrun"), "-model",
                    "quasiSteady", "-cycles", str(cycles), "-clean",
                    "-noPlot", "-case", folder] + options
         t0 = time.time()
@@ -72,12 +74,12 @@ def run_all(base, cycles):
                                  stdin=subprocess.DEVNULL)
         walls[name] = time.time() - t0
         if rc != 0:
-            sys.exit("plotQuasiSteady: %s failed (exit %d, see %s/log.%s)"
+            sys.exit("qs_flights: %s failed (exit %d, see %s/log.%s)"
                      % (" ".join(command), rc, base, name))
     return walls
 
 
-def trajectories(data, out):
+def trajectories(data, prefix):
     """x(t), z(t) of every run on one figure."""
     fig, axes = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
     for (name, _, _, label, style) in RUNS:
@@ -89,10 +91,10 @@ def trajectories(data, out):
     cycle_axes(axes[1], "z [mm]", "Vertical position")
     axes[0].set_xlabel("")
     axes[0].legend(fontsize=7)
-    save(fig, out, "quasiSteadyTrajectories.png")
+    save(fig, *os.path.split(prefix + "-trajectories.png"))
 
 
-def body_pitch(data, out):
+def body_pitch(data, prefix):
     """theta(t) of BW and TzRy."""
     fig, ax = plt.subplots(figsize=(8, 4))
     for (name, _, _, label, _) in RUNS:
@@ -102,47 +104,51 @@ def body_pitch(data, out):
                     label="%s, %s" % (label, model))
     cycle_axes(ax, "theta = q_2 [deg]", "Quasi-steady wings: body pitch")
     ax.legend(fontsize=7)
-    save(fig, out, "quasiSteadyBodyPitch.png")
+    save(fig, *os.path.split(prefix + "-bodyPitch.png"))
+
+
+def read_runs(base, walls):
+    """{name: (time, q, model label)} of the runs in base, each printed."""
+    data = {}
+    for name, _, _, _, _ in RUNS:
+        folder = os.path.join(base, name)
+        if flight_data.find(folder) is None:
+            sys.exit("qs_flights: no flight data in %s" % folder)
+        s = run_series.read(folder)
+        model = flight_data.model_label(s.attrs, multibody_coeffs(
+            os.path.join(folder, "constant", "dynamicMeshDict")))
+        data[name] = (s.time, s.q, model)
+        t, q = s.time, s.q
+        wall = (" in %.2f s" % walls[name]) if name in walls else ""
+        pitch = (", theta = %.4g deg" % np.degrees(q[-1, 2])
+                 if name.startswith("bw") else "")
+        print("qs_flights: %-8s %.4g cycles%s: x = %.5g mm, z = %.5g "
+              "mm%s (%s)" % (name, FREQUENCY*(t[-1] - t[0]), wall,
+                             1e3*q[-1, 1], 1e3*q[-1, 0], pitch, model))
+    return data
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[1])
     ap.add_argument("-cycles", type=int, default=20)
-    ap.add_argument("-dir", default=os.path.join(CASE, "runs",
-                                                 "quasiSteadyPaper"))
-    ap.add_argument("-o", dest="output", default=None)
+    ap.add_argument("-dir", default=os.path.join(
+        os.environ.get("TMPDIR", "/tmp"), "flapFoam-qsFlights"))
+    ap.add_argument("-o", dest="prefix", default=None)
     ap.add_argument("-noRun", dest="no_run", action="store_true")
     a = ap.parse_args()
     if a.cycles < 1:
         ap.error("-cycles %d: not allowed (an integer >= 1)" % a.cycles)
     base = os.path.abspath(a.dir)
-    out = a.output or base
+    prefix = os.path.abspath(a.prefix or os.path.join(base, "qsFlights"))
     os.makedirs(base, exist_ok=True)
-    os.makedirs(out, exist_ok=True)
+    os.makedirs(os.path.dirname(prefix), exist_ok=True)
 
-    walls = {} if a.no_run else run_all(base, a.cycles)
-    data = {}
-    for name, _, _, _, _ in RUNS:
-        folder = os.path.join(base, name)
-        if flight_data.find(folder) is None:
-            sys.exit("plotQuasiSteady: no flight data in %s" % folder)
-        s = run_series.read(folder)
-        model = flight_data.model_label(s.attrs, multibody_coeffs(
-            os.path.join(folder, "constant", "dynamicMeshDict")))
-        data[name] = (s.time, s.q, model)
-        t, q, _ = data[name]
-        wall = (" in %.2f s" % walls[name]) if name in walls else ""
-        pitch = (", theta = %.4g deg" % np.degrees(q[-1, 2])
-                 if name.startswith("bw") else "")
-        print("plotQuasiSteady: %-8s %.4g cycles%s: x = %.5g mm, z = %.5g "
-              "mm%s (%s)" % (name, FREQUENCY*(t[-1] - t[0]), wall,
-                             1e3*q[-1, 1], 1e3*q[-1, 0], pitch, model))
-    trajectories(data, out)
-    body_pitch(data, out)
-    print("plotQuasiSteady: wrote %s/quasiSteady{Trajectories,BodyPitch}.png"
-          % out)
+    data = read_runs(base, {} if a.no_run else run_all(base, a.cycles))
+    trajectories(data, prefix)
+    body_pitch(data, prefix)
+    print("qs_flights: wrote %s-{trajectories,bodyPitch}.png" % prefix)
     return 0
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_tool(main))
