@@ -100,9 +100,16 @@ void Foam::fv::pimpleTimers::correct(volVectorField& U)
 }
 
 
+const Foam::wordList& Foam::fv::pimpleTimers::keys()
+{
+    static const wordList k({"type", "libs", "active"});
+    return k;
+}
+
+
 bool Foam::fv::pimpleTimers::read(const dictionary& dict)
 {
-    checkDictionaryKeys(dict, wordList({"type", "active", "libs"}));
+    checkDictionaryKeys(dict, keys());
     return option::read(dict);
 }
 

@@ -26,6 +26,7 @@ License
 #include "volFields.H"
 #include "coupledFvPatchField.H"
 #include "oversetRankReport.H"
+#include "dictionaryRead.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -217,15 +218,11 @@ void Foam::timedOversetFvMesh::readOptions()
     timeWait_ =
         Pstream::parRun() && dict.getOrDefault<bool>("timeWait", false);
     compact_ = dict.getOrDefault<bool>("compactInterpolation", true);
-    const word mode(dict.getOrDefault<word>("rankReport", "first"));
-    if (!rankReportModeNames.found(mode))
-    {
-        FatalIOErrorInFunction(dict)
-            << "rankReport " << mode << " in " << dict.name()
-            << ": valid values are " << rankReportModeNames
-            << exit(FatalIOError);
-    }
-    rankReport_ = rankReportModeNames[mode];
+    rankReport_ =
+        readChoice
+        (
+            dict, "rankReport", rankReportModeNames, rankReportMode::first
+        );
 }
 
 
