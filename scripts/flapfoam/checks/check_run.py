@@ -71,9 +71,10 @@ from flapfoam.harness import checklist as checks
 
 from flapfoam.io import step_timers
 from flapfoam.io.foam_dict import multibody_coeffs, read_foam_dict, read_state
-from flapfoam.io.tables import joined_table, start_folders, time_folders
+from flapfoam.io import run_series
+from flapfoam.io.tables import time_folders
 from flapfoam.models.wang import imposed_joints
-from flapfoam.errors import FlapFoamError, run_tool
+from flapfoam.errors import run_tool
 
 
 # --------------------------------------------------------------------------
@@ -93,11 +94,9 @@ def states(case):
 
 
 def joints(case, name="eABAMeshMotion"):
-    """(columns, rows) of joints.dat joined over the start folders."""
-    base = os.path.join(case, "postProcessing", name)
-    if not start_folders(base):
-        raise FlapFoamError("check_run: no %s/<time>/joints.dat" % base)
-    return joined_table(base, "joints.dat", keep_earlier_at_start=False)
+    """(columns, rows) of postProcessing/<name>/<start>/joints.dat joined
+    over the start folders (flapfoam.io.run_series)."""
+    return run_series.read(case, tables=name).joints_table()
 
 
 def rel_diff(a, b, floor):
