@@ -48,9 +48,11 @@ Description
         writeInterval (deltaT and writeInterval > 0, endTime not before the
         start time: FatalIOError otherwise);
       - <startTime>/uniform/rigidBodyMotionState when present: the initial
-        state; a state not written by a step of a run at this time (or
-        none) is a fresh start (eABAMotion), made consistent here with the
-        loads of the initial state.
+        state, else the multibody dictionary's q and qDot (zero where
+        absent; as the overset mesh motion solver); a state not written by
+        a step of a run at this time (or none) is a fresh start
+        (eABAMotion), made consistent here with the loads of the initial
+        state.
 
     Writes
       - the q-index -> body/joint map to the log;
@@ -203,15 +205,16 @@ struct appliedLoads
 };
 
 
-// Initial state: <startTime>/uniform/rigidBodyMotionState if present (zero
-// otherwise), reported to the log
-dictionary readInitialState(const Time& runTime)
+// Initial state: <startTime>/uniform/rigidBodyMotionState if present, else
+// the multibody dictionary's q and qDot (zero where absent), as the overset
+// mesh motion solver takes them; reported to the log
+dictionary readInitialState(const Time& runTime, const dictionary& modelDict)
 {
     IOobject stateIO(RBD::eABAMotion::stateIO(runTime));
     const bool restart = stateIO.typeHeaderOk<IOdictionary>(false);
     const dictionary stateDict
     (
-        RBD::eABAMotion::initialState(runTime, dictionary())
+        RBD::eABAMotion::initialState(runTime, modelDict)
     );
 
     if (restart)
@@ -220,7 +223,8 @@ dictionary readInitialState(const Time& runTime)
     }
     else
     {
-        Info<< "No " << stateIO.objectPath() << ": zero initial state"
+        Info<< "No " << stateIO.objectPath() << ": the initial state of "
+            << modelDict.name() << " (q, qDot; zero where absent)"
             << nl << endl;
     }
 
@@ -462,7 +466,7 @@ int main(int argc, char *argv[])
     const multibodyDict multibody(runTime, args);
     const dictionary& modelDict = multibody.dict();
 
-    const dictionary stateDict(readInitialState(runTime));
+    const dictionary stateDict(readInitialState(runTime, modelDict));
 
     RBD::eABAMotion model(runTime, modelDict, stateDict);
 
