@@ -46,7 +46,6 @@ import argparse
 import math
 import os
 import shutil
-import subprocess
 import sys
 import time
 
@@ -56,21 +55,12 @@ from flapfoam.plots import control as control_plot
 from flapfoam.plots.control import ControlPlotError
 from flapfoam.errors import run_tool
 from flapfoam.paths import project_path
+from flapfoam.studies import qs_case
+from flapfoam.studies.qs_case import StudyError, foam_dictionary
 from flapfoam.studies.qs_sweep import (Sweep, SweepError, edges, grid_points, map_pair,
                               parse_grid, write_table)
 
 GAINS = ("Kp", "Ki", "Kd", "rateSetPoint")
-
-
-def foam_dictionary(*args):
-    """The output of foamDictionary ARGS (SweepError if it fails)."""
-    run = subprocess.run(["foamDictionary"] + list(args),
-                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                         universal_newlines=True)
-    if run.returncode != 0:
-        raise SweepError("foamDictionary %s: %s" % (" ".join(args),
-                                                     run.stdout[-300:]))
-    return run.stdout.strip()
 
 
 class Template:
@@ -80,27 +70,9 @@ class Template:
     swept gains into its dictionary, filled in per point."""
 
     def __init__(self, case, variant, delta_t, work_dir):
-        allrun = os.path.join(case, "Allrun")
-        if not os.path.isfile(allrun):
-            raise SweepError("-case %s: no Allrun there (allowed: a drone"
-                             " case folder, e.g. cases/bodyWingDrone)"
-                             % case)
-        self.folder = os.path.join(work_dir, "template")
-        shutil.rmtree(self.folder, ignore_errors=True)
-        log = os.path.join(work_dir, "log.template")
-        with open(log, "w") as out:
-            rc = subprocess.call([allrun, "-model", "quasiSteady",
-                                  "-variant", variant, "-cycles", "1",
-                                  "-deltaT", repr(delta_t), "-case",
-                                  self.folder, "-noPlot"], stdout=out,
-                                 stderr=subprocess.STDOUT,
-                                 stdin=subprocess.DEVNULL)
-        if rc != 0:
-            with open(log) as f:
-                tail = f.read()[-400:]
-            raise SweepError("%s -model quasiSteady -variant %s -cycles 1"
-                             " failed (exit %d, %s): %s" % (allrun, variant,
-                                                            rc, log, tail))
+        self.folder = qs_case.set_up(case, os.path.join(work_dir, "template"),
+                                     ["-variant", variant, "-deltaT",
+                                      repr(delta_t)])
         _, self.terms = control_plot.controlled_terms(self.folder)
         self.bounds = {"%s.%s" % (s.label, g): (-math.inf, math.inf)
                        for s in self.terms for g in GAINS}
@@ -157,14 +129,9 @@ class GainSweep(Sweep):
         case = os.path.join(self.work_dir, name)
         shutil.rmtree(case, ignore_errors=True)
         self.model.write(case, values)
-        start = time.time()
-        with open(os.path.join(case, "log.rigidBodySimulate"), "w") as log:
-            rc = subprocess.call(["rigidBodySimulate", "-case", case,
-                                  "-bodyLoad", "aerodynamics"], stdout=log,
-                                 stderr=subprocess.STDOUT,
-                                 stdin=subprocess.DEVNULL)
+        rc, seconds = qs_case.simulate(case, "log.rigidBodySimulate")
         row = {"status": "ok" if rc == 0 else "failed (exit %d)" % rc,
-               "seconds": time.time() - start}
+               "seconds": seconds}
         run = control_plot.Run(case) if rc == 0 else None
         ratios = []
         for s in self.model.terms:
@@ -312,7 +279,7 @@ def main(argv=None):
             len(rows), args.cycles, settle)
         plot((args.o + ".png", title), rows, grid, pair, bands)
         report(rows, grid, template.terms, settle)
-    except (SweepError, ControlPlotError) as e:
+    except (StudyError, ControlPlotError) as e:
         sys.exit("gain_sweep: %s" % e)
 
 

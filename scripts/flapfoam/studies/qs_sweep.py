@@ -53,7 +53,6 @@ import math
 import os
 import re
 import shutil
-import subprocess
 import sys
 import time
 from concurrent.futures import ThreadPoolExecutor
@@ -64,6 +63,8 @@ from flapfoam.io import run_series
 from flapfoam.io.foam_dict import read_foam_dict, set_entry
 from flapfoam.errors import run_tool
 from flapfoam.paths import project_path
+from flapfoam.studies import qs_case
+from flapfoam.studies.qs_case import StudyError
 
 # name: (imposedMotion waveform or None, key, allowed (lo, hi) open range)
 PARAMETERS = {
@@ -83,7 +84,7 @@ RESULTS = ("meanClimbRate", "meanClimbAcceleration", "forceOverWeight",
            "meanDrift", "meanPower")
 
 
-class SweepError(Exception):
+class SweepError(StudyError):
     """Bad input: the message names the option, the value and what is
     allowed."""
 
@@ -230,9 +231,9 @@ def joint_map(log):
     """(heave, surge): the q indices of the first free Pz and Px joints in
     rigidBodySimulate's joint state map."""
     free = {}
-    for m in re.finditer(r"q\[(\d+)\]: body \S+, joint (\w+)(.*)", log):
-        if "prescribed" not in m.group(3):
-            free.setdefault(m.group(2), int(m.group(1)))
+    for j in qs_case.joint_map(log):
+        if j.motion is None:
+            free.setdefault(j.type, j.index)
     return free.get("Pz"), free.get("Px")
 
 
@@ -282,12 +283,7 @@ class Sweep:
         with open(os.path.join(case, "system", "controlDict"), "w") as out:
             out.write(CONTROLDICT % (self.cycles/f,
                                      1.0/(f*self.steps_per_cycle)))
-        start = time.time()
-        with open(os.path.join(case, "log"), "w") as log:
-            rc = subprocess.call(["rigidBodySimulate", "-case", case,
-                                  "-bodyLoad", "aerodynamics"],
-                                 stdout=log, stderr=subprocess.STDOUT)
-        seconds = time.time() - start
+        rc, seconds = qs_case.simulate(case, "log")
         with open(os.path.join(case, "log")) as log:
             text = log.read()
         heave, surge = joint_map(text)

@@ -1,0 +1,96 @@
+# License
+#     This file is part of flapFoam: free software
+#     under the GNU General Public License v3 or later (COPYING).
+"""
+A drone case flown by the quasi-steady (QS) model in copies of a run
+folder: the studies' one way to set a case up (its Allrun -model
+quasiSteady, one cycle, no plots), to run rigidBodySimulate -bodyLoad
+aerodynamics in a folder, and to read the joint map of its log (qs_sweep,
+gain_sweep, trim, floquet).
+"""
+
+import os
+import re
+import shutil
+import subprocess
+import time
+from dataclasses import dataclass
+
+from flapfoam.errors import FlapFoamError
+
+
+class StudyError(FlapFoamError):
+    """Bad input or a failed run of a study: the message names the option
+    or file, the value and what is allowed."""
+
+
+def foam_dictionary(*args):
+    """The output of foamDictionary ARGS (StudyError if it fails)."""
+    run = subprocess.run(["foamDictionary"] + list(args),
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                         universal_newlines=True)
+    if run.returncode != 0:
+        raise StudyError("foamDictionary %s: %s" % (" ".join(args),
+                                                    run.stdout[-300:]))
+    return run.stdout.strip()
+
+
+def set_up(case, folder, options):
+    """The case's QS run folder of one cycle, made afresh (an earlier
+    FOLDER removed) by its Allrun -model quasiSteady -cycles 1 -case FOLDER
+    -noPlot OPTIONS (e.g. -variant V -deltaT DT), its output in
+    FOLDER.log; StudyError if it fails."""
+    allrun = os.path.join(case, "Allrun")
+    if not os.path.isfile(allrun):
+        raise StudyError("-case %s: no Allrun there (allowed: a drone case"
+                         " folder, e.g. cases/bodyWingDrone)" % case)
+    log = folder + ".log"
+    shutil.rmtree(folder, ignore_errors=True)
+    command = [allrun, "-model", "quasiSteady", "-cycles", "1", "-case",
+               folder, "-noPlot"] + list(options)
+    with open(log, "w") as out:
+        rc = subprocess.call(command, stdout=out, stderr=subprocess.STDOUT,
+                             stdin=subprocess.DEVNULL)
+    if rc != 0:
+        with open(log) as f:
+            tail = f.read()[-400:]
+        raise StudyError("%s failed (exit %d, %s): %s"
+                         % (" ".join(command), rc, log, tail))
+    return folder
+
+
+def simulate(case, log, options=()):
+    """(exit status, seconds) of rigidBodySimulate -case CASE -bodyLoad
+    aerodynamics OPTIONS, its output in CASE/LOG."""
+    start = time.time()
+    with open(os.path.join(case, log), "w") as out:
+        rc = subprocess.call(["rigidBodySimulate", "-case", case,
+                              "-bodyLoad", "aerodynamics"] + list(options),
+                             stdout=out, stderr=subprocess.STDOUT,
+                             stdin=subprocess.DEVNULL)
+    return rc, time.time() - start
+
+
+@dataclass
+class Joint:
+    """One q index of rigidBodySimulate's joint state map: its body, its
+    joint type (Pz, Ry, ...) and the imposedMotion entry that prescribes
+    it (None: free)."""
+    index: int
+    body: str
+    type: str
+    motion: str = None
+
+    @property
+    def translation(self):
+        return self.type in ("Px", "Py", "Pz")
+
+
+def joint_map(log_text):
+    """[Joint] of a rigidBodySimulate log, in q index order."""
+    joints = []
+    for m in re.finditer(r"q\[(\d+)\]: body (\S+), joint (\w+)"
+                         r"(?:, prescribed by (\S+))?", log_text):
+        joints.append(Joint(int(m.group(1)), m.group(2), m.group(3),
+                            m.group(4)))
+    return joints
