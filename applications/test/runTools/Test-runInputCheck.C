@@ -166,7 +166,7 @@ TEST(runInputCheck, controls)
             ioErrorOf([&]{ runInputCheck::controls(f.path()); })
         );
         EXPECT_NE(msg.find(entry.substr(0, entry.size() - 1)
-            + ": must be positive"), std::string::npos) << msg;
+            + ": a value > 0"), std::string::npos) << msg;
     }
     const scratchFile good("deltaT 1e-5;\nwriteInterval 0.0125;\n");
     EXPECT_EQ(ioErrorOf([&]{ runInputCheck::controls(good.path()); }), "");

@@ -141,6 +141,17 @@ Foam::functionObjects::levStatistics::levStatistics
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+const Foam::wordList& Foam::functionObjects::levStatistics::keys()
+{
+    static const wordList k
+    ({
+        "cellZone", "spanAxis", "U", "writePrecision", "writeToFile",
+        "useUserTime"
+    });
+    return k;
+}
+
+
 Foam::functionObjects::levStatistics::sums
 Foam::functionObjects::levStatistics::sum
 (
@@ -173,15 +184,7 @@ Foam::functionObjects::levStatistics::sum
 
 bool Foam::functionObjects::levStatistics::read(const dictionary& dict)
 {
-    functionObjectKeys::check
-    (
-        dict,
-        wordList
-        ({
-            "cellZone", "spanAxis", "U", "writePrecision", "writeToFile",
-            "useUserTime"
-        })
-    );
+    functionObjectKeys::check(dict, keys());
     fvMeshFunctionObject::read(dict);
     writeFile::read(dict);
 

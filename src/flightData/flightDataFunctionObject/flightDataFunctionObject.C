@@ -25,6 +25,7 @@ License
 #include "fvMesh.H"
 #include "functionObjectKeys.H"
 #include "dictionaryKeys.H"
+#include "dictionaryRead.H"
 #include "addToRunTimeSelectionTable.H"
 #include "IOdictionary.H"
 #include "OSspecific.H"
@@ -278,16 +279,10 @@ void Foam::functionObjects::flightData::readCoefficients
                 << " needs one" << exit(FatalIOError);
         }
         const dictionary& bd = coeffs.subDict(body);
-        checkDictionaryKeys(bd, wordList({"area", "chord", "momentAbout"}));
+        checkDictionaryKeys(bd, coefficientKeys());
         bodyIDs_[i] = model.bodyID(body);
-        area_[i] = bd.get<scalar>("area");
-        chord_[i] = bd.get<scalar>("chord");
-        if (area_[i] <= 0 || chord_[i] <= 0)
-        {
-            FatalIOErrorInFunction(bd)
-                << "area " << area_[i] << ", chord " << chord_[i]
-                << ": both must be positive" << exit(FatalIOError);
-        }
+        area_[i] = readAllowed(bd, "area", allowed::above(0.0));
+        chord_[i] = readAllowed(bd, "chord", allowed::above(0.0));
         const word about(bd.getOrDefault<word>("momentAbout", body));
         momentAbout_[i] = -1;
         for (label b = 0; b < model.nBodies(); ++b)
@@ -377,23 +372,30 @@ Foam::functionObjects::flightData::flightData
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+const Foam::wordList& Foam::functionObjects::flightData::keys()
+{
+    static const wordList k
+    ({
+        "rhoInf", "Uref", "coefficients", "attributes", "tables"
+    });
+    return k;
+}
+
+
+const Foam::wordList& Foam::functionObjects::flightData::coefficientKeys()
+{
+    static const wordList k({"area", "chord", "momentAbout"});
+    return k;
+}
+
+
 bool Foam::functionObjects::flightData::read(const dictionary& dict)
 {
     regionFunctionObject::read(dict);
-    functionObjectKeys::check
-    (
-        dict,
-        wordList({"rhoInf", "Uref", "coefficients", "attributes", "tables"})
-    );
+    functionObjectKeys::check(dict, keys());
 
-    rhoInf_ = dict.get<scalar>("rhoInf");
-    Uref_ = dict.get<scalar>("Uref");
-    if (rhoInf_ <= 0 || Uref_ <= 0)
-    {
-        FatalIOErrorInFunction(dict)
-            << "rhoInf " << rhoInf_ << ", Uref " << Uref_
-            << ": both must be positive" << exit(FatalIOError);
-    }
+    rhoInf_ = readAllowed(dict, "rhoInf", allowed::above(0.0));
+    Uref_ = readAllowed(dict, "Uref", allowed::above(0.0));
     tablesName_ = dict.getOrDefault<word>("tables", word::null);
 
     motion_ = &findMotion();

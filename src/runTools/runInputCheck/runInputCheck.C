@@ -24,6 +24,7 @@ License
 #include "IFstream.H"
 #include "dictionary.H"
 #include "OSspecific.H"
+#include "dictionaryRead.H"
 
 #include <cfenv>
 #include <cmath>
@@ -164,21 +165,17 @@ void Foam::runInputCheck::controls(const fileName& controlDict)
     IFstream is(controlDict);
     const dictionary dict(is);
 
-    for (const word key : {"deltaT", "writeInterval"})
-    {
-        scalar value = 1;
-        if (dict.readIfPresent(key, value) && !(value > 0))
-        {
-            FatalIOErrorInFunction(dict)
-                << key << " " << value << ": must be positive"
-                << (
-                       key == "writeInterval"
-                     ? " (steps for writeControl timeStep, else seconds)"
-                     : " (seconds)"
-                   )
-                << exit(FatalIOError);
-        }
-    }
+    readAllowed(dict, "deltaT", 1.0, allowed::above(0.0).noting("seconds"));
+    readAllowed
+    (
+        dict,
+        "writeInterval",
+        1.0,
+        allowed::above(0.0).noting
+        (
+            "steps for writeControl timeStep, else seconds"
+        )
+    );
 }
 
 

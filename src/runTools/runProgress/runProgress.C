@@ -23,6 +23,7 @@ License
 #include "runProgress.H"
 #include "imposedMotionKey.H"
 #include "functionObjectKeys.H"
+#include "dictionaryRead.H"
 #include "addToRunTimeSelectionTable.H"
 #include "IOdictionary.H"
 #include "Time.H"
@@ -43,26 +44,6 @@ namespace functionObjects
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-Foam::scalar Foam::functionObjects::runProgress::positive
-(
-    const dictionary& dict,
-    const word& key,
-    const scalar deflt
-)
-{
-    const scalar value =
-        deflt > 0 ? dict.getOrDefault<scalar>(key, deflt)
-      : dict.get<scalar>(key);
-    if (!(value > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << key << " " << value << ": a positive number is allowed"
-            << exit(FatalIOError);
-    }
-    return value;
-}
-
 
 Foam::functionObjects::runProgress::mark
 Foam::functionObjects::runProgress::now() const
@@ -103,7 +84,11 @@ Foam::scalar Foam::functionObjects::runProgress::motionPeriod
             << " name one of them, or give the period instead"
             << exit(FatalIOError);
     }
-    return 1/positive(motions->subDict(entry), "frequency", 0);
+    return
+        1/readAllowed
+        (
+            motions->subDict(entry), "frequency", allowed::above(0.0)
+        );
 }
 
 
@@ -215,15 +200,20 @@ Foam::functionObjects::runProgress::runProgress
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+const Foam::wordList& Foam::functionObjects::runProgress::keys()
+{
+    static const wordList k({"progressInterval", "period", "cycleMotion"});
+    return k;
+}
+
+
 bool Foam::functionObjects::runProgress::read(const dictionary& dict)
 {
     timeFunctionObject::read(dict);
-    functionObjectKeys::check
-    (
-        dict, wordList({"progressInterval", "period", "cycleMotion"})
-    );
+    functionObjectKeys::check(dict, keys());
 
-    interval_ = positive(dict, "progressInterval", 300);
+    interval_ =
+        readAllowed(dict, "progressInterval", 300.0, allowed::above(0.0));
 
     if (dict.found("period") && dict.found("cycleMotion"))
     {
@@ -239,7 +229,7 @@ bool Foam::functionObjects::runProgress::read(const dictionary& dict)
     }
     else if (dict.found("period"))
     {
-        period_ = positive(dict, "period", 0);
+        period_ = readAllowed(dict, "period", allowed::above(0.0));
     }
 
     Info<< type() << " " << name() << ": a line every "
