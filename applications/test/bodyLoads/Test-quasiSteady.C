@@ -25,7 +25,9 @@ Description
     pitch joint (Ry about the span), the root off the stroke axis.  Each
     strip's force is written out here from the definition and
     summed apart from the library; zero relative velocity gives zero force;
-    a wing moving along its chord feels only CD0; the aerodynamic power of a
+    a wing moving along its chord feels only CD0; the centre of pressure
+    (CoP0, CoP1) moves the moment by d c x F and leaves the force; the
+    aerodynamic power of a
     wing in still air is never positive; the load converges in nStrips; bad
     entries are FatalIOErrors naming the key.
 
@@ -207,6 +209,49 @@ TEST(quasiSteady, normalAndInclinedPlate)
         EXPECT_LT(mag(f.l() - F), 1e-13*mag(F)) << str(f) << " vs " << F.x() << " " << F.y() << " " << F.z();
         // Lift pushes the plate the way the air flows through it
         EXPECT_GE((f.l() & n)*(u & n), 0);
+    }
+}
+
+
+TEST(quasiSteady, centreOfPressureMovesTheMomentOnly)
+{
+    // The inclined plate above (constant chord 0.01, alpha = p at every
+    // strip): with CoP0 a, CoP1 b each strip's force acts d = (a + b
+    // p/(pi/2)) 0.01 along the chord c from the pitch axis, so the force is
+    // the same and the moment grows by d c x F
+    const scalar w = 3.0, a = -0.1, b = 0.35;
+    const std::string table
+    (
+        "chordDistribution table; chords ((0 0.01) (0.05 0.01));"
+    );
+    for (const scalar p : {0.0, 0.4, 1.1, constant::mathematical::piByTwo})
+    {
+        SCOPED_TRACE(p);
+        const spatialVector onAxis
+        (
+            wingLoad(wingEntry("nStrips 8;", table), two(0, p), two(w, 0))
+        );
+        const spatialVector moved
+        (
+            wingLoad
+            (
+                wingEntry("nStrips 8; CoP0 -0.1; CoP1 0.35;", table),
+                two(0, p),
+                two(w, 0)
+            )
+        );
+        const vector c(std::cos(p), 0, -std::sin(p));
+        const scalar d = (a + b*p/constant::mathematical::piByTwo)*0.01;
+        const vector dM(d*(c ^ onAxis.l()));
+        EXPECT_LT(mag(moved.l() - onAxis.l()), 1e-15*mag(onAxis.l()));
+        EXPECT_LT
+        (
+            mag(moved.w() - onAxis.w() - dM),
+            1e-13*mag(onAxis.w()) + 1e-18
+        )   << str(moved) << " vs " << str(onAxis);
+        // About the pitch axis (the span y) it is the normal force's arm:
+        // none along the chord (p = 0, drag only)
+        EXPECT_EQ(mag(dM) > 1e-3*mag(onAxis.w()), p > 0);
     }
 }
 

@@ -40,7 +40,10 @@ def vec(tokens):
 
 
 class Wing:
-    """The strips of one quasiSteady entry (the issue's definition)."""
+    """The strips of one quasiSteady entry (the issue's definition): each
+    strip's force acts at its chordwise centre of pressure, d = (CoP0 +
+    CoP1 2 alpha/pi) c from the pitch axis along the chord direction
+    (0, 0 by default: on the axis)."""
 
     def __init__(self, entry):
         R = float(entry["length"][0])
@@ -52,19 +55,25 @@ class Wing:
         else:
             table = vec(entry["chords"]).reshape(-1, 2)
             c = np.interp(r, table[:, 0], table[:, 1])
+        self.chords = c
         self.area = c*R/N
         self.span = vec(entry["span"])
         self.chord = vec(entry["chord"])
-        self.points = vec(entry["root"]) + np.outer(r, self.span)
+        self.root = vec(entry["root"])
+        self.points = self.root + np.outer(r, self.span)
         self.rho = float(entry["rho"][0])
         self.CL = float(entry.get("CL", ["1.2"])[0])
         self.CD0 = float(entry.get("CD0", ["0.4"])[0])
         self.CD1 = float(entry.get("CD1", ["1.0"])[0])
+        self.CoP0 = float(entry.get("CoP0", ["0"])[0])
+        self.CoP1 = float(entry.get("CoP1", ["0"])[0])
         self.wind = vec(entry.get("wind", ["0", "0", "0"]))
 
-    def force(self, E, origin, v_origin, omega):
-        """Force and moment (global origin) for the body's orientation E
-        (body -> global), origin position and velocity, angular velocity."""
+    def strips(self, E, v_origin, omega):
+        """The loaded strips for the body's orientation E (body -> global),
+        its origin's velocity and angular velocity: a dict of their index
+        (live), arm (global, from the origin), angle of attack alpha,
+        force d_f, and the global span and chord directions s, c."""
         s, c = E @ self.span, E @ self.chord
         n = np.cross(c, s)
         arm = self.points @ E.T
@@ -81,7 +90,22 @@ class Wing:
         CD = self.CD0 + self.CD1*(1 - np.cos(2*alpha))
         d_f = (0.5*self.rho*U[live]**2*self.area[live])[:, None] \
             *(CL[:, None]*e_l + CD[:, None]*e_d)
-        return d_f.sum(axis=0), np.cross(origin + arm[live], d_f).sum(axis=0)
+        return {"live": live, "arm": arm[live], "alpha": alpha, "d_f": d_f,
+                "s": s, "c": c}
+
+    def centre_of_pressure(self, strips):
+        """Each live strip's offset from its pitch-axis point along the
+        chord [m]."""
+        return (self.CoP0 + self.CoP1*2*strips["alpha"]/math.pi) \
+            * self.chords[strips["live"]]
+
+    def force(self, E, origin, v_origin, omega):
+        """Force and moment (global origin) for the body's orientation E
+        (body -> global), origin position and velocity, angular velocity."""
+        st = self.strips(E, v_origin, omega)
+        at = origin + st["arm"] \
+            + np.outer(self.centre_of_pressure(st), st["c"])
+        return st["d_f"].sum(axis=0), np.cross(at, st["d_f"]).sum(axis=0)
 
 
 def rotation(axis, angle):

@@ -7,7 +7,7 @@ on a CFD run, as Lee et al. (2016) did on Fluent runs: the coefficients
 CL, CD0, CD1 fitted to the run's fluid force on the wing by linear least
 squares.
 
-    flapfoam qs_calibrate CASE [-dict DICT] [-wing NAME]
+    flapfoam qs_calibrate CASE [-dict DICT] [-wing NAME] [-momentAbout BODY]
         [-skip N] [-until T] [-components xz|xyz] [-out FILE]
 
 The blade-element force is linear in the coefficients: per strip
@@ -23,6 +23,15 @@ force components (x and z, or all three) of every row are fitted by one
 least-squares problem, each row weighted by its time step (the run's
 steps may vary).
 
+Then the chordwise centre of pressure: each strip's force acts at d =
+(CoP0 + CoP1 2 alpha/pi) c from the pitch axis along the chord, so the
+model's moment about the pitch axis (along the span) is linear in CoP0,
+CoP1 given the fitted force; they are fitted to the run's fluid moment
+about the pitch axis (the flight data's moment of the wing, taken about
+the centre of mass of the body -momentAbout names, default: the
+flightData function object's momentAbout of the wing in CASE/system/
+controlDict, else the wing), each row weighted by its time step.
+
 DICT (default CASE/constant/dynamicMeshDict) holds the aerodynamics entry
 (NAME: default its only entry); -skip N leaves out the first N steps (the
 start-up transient; the first row, the initial state whose loads are not
@@ -32,12 +41,13 @@ residual relative to the force's range per component, the condition
 number), the mean vertical force of the CFD, of the fitted QS and of the
 QS with Wang's defaults (over the whole flapping cycles of the fitted rows,
 or over all of them when they cover less than a cycle), and the entry to
-paste (the dictionary's entry with the fitted CL, CD0, CD1; -out FILE also
-writes it there).  numpy and h5py.
+paste (the dictionary's entry with the fitted CL, CD0, CD1, CoP0, CoP1;
+-out FILE also writes it there).  numpy and h5py.
 """
 
 import argparse
 import copy
+import math
 import os
 import re
 from dataclasses import dataclass
@@ -46,11 +56,12 @@ import numpy as np
 
 from flapfoam.io import run_series
 from flapfoam.io.flight_data import find
-from flapfoam.io.foam_dict import multibody_coeffs
+from flapfoam.io.foam_dict import multibody_coeffs, read_foam_dict
 from flapfoam.models.quasi_steady import Wing, vec
 from flapfoam.errors import FlapFoamError, run_tool
 
 COEFFS = ("CL", "CD0", "CD1")
+COP = ("CoP0", "CoP1")
 
 
 def fail(message):
@@ -96,6 +107,10 @@ class FlightRows:
         self.path = path
         t, d = self.read(case, body)
         self.select(t, d, window)
+        self.moment, self.moment_point = None, None
+        if d["moment"] is not None and d["momentPoint"] is not None:
+            self.moment = d["moment"][self.rows]
+            self.moment_point = d["momentPoint"][self.rows]
         E = d["orientation"][self.rows].reshape(-1, 3, 3)
         arm = E @ centre_of_mass
         self.E, self.omega = E, d["angularVelocity"][self.rows]
@@ -112,15 +127,18 @@ class FlightRows:
             series = run_series.read(case)
         except FlapFoamError as e:
             fail(str(e))
-        b = series.bodies.get(body, run_series.Body())
+        b = series.bodies.get(body[0], run_series.Body())
         d = {k: getattr(b, f) for k, f in self.KEYS.items()}
-        missing = ["bodies/%s/%s" % (body, k) for k, v in d.items()
+        missing = ["bodies/%s/%s" % (body[0], k) for k, v in d.items()
                    if v is None]
         if missing:
             fail("%s: no %s (the motion and fluid force of body %s);"
                  " its bodies: %s"
-                 % (self.path, ", ".join(missing), body,
+                 % (self.path, ", ".join(missing), body[0],
                     ", ".join(series.bodies) or "none"))
+        d["moment"] = b.moment
+        d["momentPoint"] = series.bodies.get(body[1],
+                                             run_series.Body()).position
         return series.time, d
 
     def select(self, t, d, window):
@@ -185,6 +203,51 @@ def fit(basis, rows, components):
     return x/scale, sv[0]/sv[-1]
 
 
+def pitch_axis_basis(wing, rows):
+    """(rows, 2): the model's moment about the wing's pitch axis (about the
+    span direction) per unit CoP0 and CoP1 at every row (wing: the fitted
+    force)."""
+    basis = np.zeros((len(rows.time), 2))
+    for i in range(len(rows.time)):
+        st = wing.strips(rows.E[i], rows.v_origin[i], rows.omega[i])
+        m = (np.cross(st["c"], st["d_f"]) @ st["s"]) \
+            * wing.chords[st["live"]]
+        basis[i] = m.sum(), (m*2*st["alpha"]/math.pi).sum()
+    return basis
+
+
+def pitch_axis_moment(wing, rows):
+    """The run's fluid moment on the wing about its pitch axis (the span
+    through the root point) at every row."""
+    span = rows.E @ wing.span
+    axis_point = rows.origin + rows.E @ wing.root
+    moment = rows.moment + np.cross(rows.moment_point - axis_point,
+                                    rows.force)
+    return np.einsum("ij,ij->i", moment, span)
+
+
+def fit_centre_of_pressure(wing, rows):
+    """(CoP0, CoP1), the model's pitch-axis moment with them and the run's:
+    least squares over the rows, each weighted by its time step."""
+    basis = pitch_axis_basis(wing, rows)
+    measured = pitch_axis_moment(wing, rows)
+    w = np.sqrt(rows.step)
+    x, _, rank, _ = np.linalg.lstsq(basis*w[:, None], measured*w,
+                                    rcond=None)
+    if rank < 2:
+        fail("CoP0 and CoP1 cannot be told apart over the fitted rows (rank"
+             " %d of 2): fit over more of a cycle" % rank)
+    return x, basis @ x, measured
+
+
+def r_squared(measured, model, weights):
+    """R^2 of model against measured, means weighted."""
+    res = np.average((measured - model)**2, weights=weights)
+    spread = np.average((measured - np.average(measured, weights=weights))
+                        ** 2, weights=weights)
+    return 1 - res/spread if spread > 0 else np.nan
+
+
 def quality(model, rows, components):
     """Per component: (R^2, RMS residual / range of the force), means
     weighted by the time steps."""
@@ -221,18 +284,33 @@ def cycle_rows(rows, coeffs):
 
 
 def entry_text(name, entry, values):
-    """The aerodynamics entry NAME with the fitted coefficients."""
+    """The aerodynamics entry NAME with the fitted coefficients (values:
+    {key: value})."""
     lines = ["    %s" % name, "    {"]
-    keys = list(entry) + [k for k in COEFFS if k not in entry]
+    keys = list(entry) + [k for k in values if k not in entry]
     for key in keys:
-        if key in COEFFS:
-            text = "%.8g" % values[COEFFS.index(key)]
+        if key in values:
+            text = "%.8g" % values[key]
         else:
             text = re.sub(r"\(\s+", "(", " ".join(entry[key]))
             text = re.sub(r"\s+\)", ")", text)
         lines.append("        %-11s %s;" % (key, text))
     lines.append("    }")
     return "\n".join(lines)
+
+
+def moment_about(case, body):
+    """The body about whose centre of mass the run's flight data takes the
+    moment of body (the flightData function object's coefficients entry
+    in CASE/system/controlDict), body itself without one."""
+    path = os.path.join(case, "system", "controlDict")
+    if not os.path.isfile(path):
+        return body
+    for fo in read_foam_dict(path).get("functions", {}).values():
+        if isinstance(fo, dict) and fo.get("type") == ["flightData"]:
+            entry = fo.get("coefficients", {}).get(body, {})
+            return entry.get("momentAbout", [body])[0]
+    return body
 
 
 @dataclass
@@ -245,6 +323,24 @@ class WingEntry:
     coeffs: dict
 
 
+def centre_of_pressure(defaults, fitted, rows):
+    """Fit CoP0, CoP1 (the wing with the fitted force coefficients) to the
+    run's moment about the pitch axis; print how much of it they explain;
+    return them."""
+    wing = copy.copy(defaults)
+    wing.CL, wing.CD0, wing.CD1 = fitted
+    cop, model, measured = fit_centre_of_pressure(wing, rows)
+    print("centre of pressure: CoP0 %.8g CoP1 %.8g chords from the pitch"
+          " axis (d = (CoP0 + CoP1 2 alpha/pi) c along the chord); the"
+          " run's moment about the pitch axis: RMS %.4g N m, R^2 %.6f with"
+          " it, %.6f on the axis (CoP 0 0)"
+          % (cop[0], cop[1], np.sqrt(np.average(measured**2,
+                                                weights=rows.step)),
+             r_squared(measured, model, rows.step),
+             r_squared(measured, 0*model, rows.step)))
+    return cop
+
+
 def report(wing, rows, axes):
     """Fit the wing (a WingEntry) on the rows' force components axes ("xz"
     or "xyz"), print the report and the entry; returns the entry's
@@ -253,7 +349,8 @@ def report(wing, rows, axes):
     components = ["xyz".index(c) for c in axes]
     basis = basis_forces(Wing(entry), rows)
     fitted, cond = fit(basis, rows, components)
-    defaults = Wing({k: v for k, v in entry.items() if k not in COEFFS})
+    defaults = Wing({k: v for k, v in entry.items()
+                     if k not in COEFFS + COP})
     wang = np.array([defaults.CL, defaults.CD0, defaults.CD1])
     keep, over = cycle_rows(rows, coeffs)
 
@@ -280,7 +377,13 @@ def report(wing, rows, axes):
         print("QS %s (CL %.4g CD0 %.4g CD1 %.4g): %s; mean F_z %.6g N ="
               " %.4f of the run's" % (label, *x, fit_text, mean_z(model),
                                        mean_z(model)/mean_z(rows.force)))
-    text = entry_text(wing.name, entry, fitted)
+    values = dict(zip(COEFFS, fitted))
+    if rows.moment is None:
+        print("centre of pressure: not fitted (the flight data has no"
+              " moment of the wing)")
+    else:
+        values.update(zip(COP, centre_of_pressure(defaults, fitted, rows)))
+    text = entry_text(wing.name, entry, values)
     print("The entry to paste (aerodynamics of %s):\n%s" % (wing.path, text))
     return text
 
@@ -298,6 +401,11 @@ def main():
                         help="leave out the steps after this time [s] (e.g."
                         " 0.1: the first two cycles at 20 Hz)")
     parser.add_argument("-components", choices=("xz", "xyz"), default="xz")
+    parser.add_argument("-momentAbout", dest="moment_about", metavar="BODY",
+                        help="the body about whose centre of mass the flight"
+                        " data's wing moment is taken (default: the"
+                        " flightData momentAbout of CASE/system/controlDict,"
+                        " else the wing's body)")
     parser.add_argument("-out", help="also write the entry to this file")
     args = parser.parse_args()
     args.dict = args.dict or os.path.join(args.case, "constant",
@@ -309,7 +417,12 @@ def main():
              " (allowed: %s)" % (args.dict, name, body,
                                  ", ".join(coeffs.get("bodies", {}))))
     centre = vec(coeffs["bodies"][body].get("centreOfMass", ["0", "0", "0"]))
-    rows = FlightRows(args.case, body, centre, (args.skip, args.until))
+    about = args.moment_about or moment_about(args.case, body)
+    if about not in coeffs.get("bodies", {}):
+        fail("-momentAbout %s: not a body of the tree (allowed: %s)"
+             % (about, ", ".join(coeffs.get("bodies", {}))))
+    rows = FlightRows(args.case, (body, about), centre,
+                      (args.skip, args.until))
     text = report(WingEntry(args.dict, name, entry, coeffs), rows,
                   args.components)
     if args.out:

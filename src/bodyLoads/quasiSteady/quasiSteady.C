@@ -56,7 +56,7 @@ const Foam::wordList& Foam::wingAerodynamicsModels::quasiSteady::keys()
     ({
         "type", "body", "root", "span", "chord", "length",
         "chordDistribution", "meanChord", "chords", "rho", "CL", "CD0",
-        "CD1", "nStrips", "wind"
+        "CD1", "CoP0", "CoP1", "nStrips", "wind"
     });
     return k;
 }
@@ -159,16 +159,18 @@ Foam::vector Foam::wingAerodynamicsModels::quasiSteady::stripForce
     const vector& uPerp,
     const vector& s,
     const vector& c,
-    const scalar area
+    const scalar area,
+    scalar& alpha
 ) const
 {
     const scalar magU = mag(uPerp);
+    alpha = 0;
     if (magU < 1e-12)
     {
         return Zero;
     }
     const vector eD(uPerp/magU);
-    const scalar alpha = acos(min(scalar(1), mag(eD & c)));
+    alpha = acos(min(scalar(1), mag(eD & c)));
 
     // Lift normal to the span and the flow, on the side the air flows
     // through the plate (the plate's normal n = c x s)
@@ -202,6 +204,8 @@ Foam::wingAerodynamicsModels::quasiSteady::quasiSteady
     CL_(dict.getOrDefault<scalar>("CL", 1.2)),
     CD0_(dict.getOrDefault<scalar>("CD0", 0.4)),
     CD1_(dict.getOrDefault<scalar>("CD1", 1.0)),
+    CoP0_(dict.getOrDefault<scalar>("CoP0", 0)),
+    CoP1_(dict.getOrDefault<scalar>("CoP1", 0)),
     wind_(dict.getOrDefault<vector>("wind", Zero))
 {
     checkKeys(dict);
@@ -222,7 +226,8 @@ Foam::wingAerodynamicsModels::quasiSteady::quasiSteady
     {
         r[k] = (k + 0.5)*R/N;
     }
-    areas_ = chords(dict, r, R)*(R/N);
+    chordLengths_ = chords(dict, r, R);
+    areas_ = chordLengths_*(R/N);
     points_ = dict.get<vector>("root") + r*span_;
 }
 
@@ -245,9 +250,15 @@ Foam::spatialVector Foam::wingAerodynamicsModels::quasiSteady::load
     forAll(points_, k)
     {
         const vector u(wind_ - model.v(bodyID_, points_[k]).l());
-        const vector dF(stripForce(u - (u & s)*s, s, c, areas_[k]));
+        scalar alpha;
+        const vector dF(stripForce(u - (u & s)*s, s, c, areas_[k], alpha));
+
+        // At the chordwise centre of pressure, from the pitch axis
+        const scalar d =
+            (CoP0_ + CoP1_*alpha/constant::mathematical::piByTwo)
+           *chordLengths_[k];
         force += dF;
-        moment += toGlobal.transformPoint(points_[k]) ^ dF;
+        moment += (toGlobal.transformPoint(points_[k]) + d*c) ^ dF;
     }
     return spatialVector(moment, force);
 }
