@@ -333,7 +333,10 @@ TEST(Errors, quasiSteadyBadEntries)
         {"meanChord 0;", {"meanChord 0:", "a value > 0 is allowed"}},
         {"body ghost;", {"ghost", "not a body of the tree"}},
         {"phse 1;", {"Unknown key 'phse'", "nStrips"}},
-        {"chordDistribution elliptic;", {"chordDistribution elliptic unknown", "2(semiElliptic table)"}},
+        {
+            "chordDistribution elliptic;",
+            {"chordDistribution elliptic unknown", "2(semiElliptic table)"}
+        },
         {"type quasiStatic;", {"quasiStatic", "quasiSteady"}}
     });
     for (const auto& b : bad)
