@@ -9,6 +9,7 @@ aerodynamics in a folder, and to read the joint map of its log (qs_sweep,
 gain_sweep, trim, floquet).
 """
 
+import json
 import os
 import re
 import shutil
@@ -25,8 +26,11 @@ class StudyError(FlapFoamError):
 
 
 def foam_dictionary(*args):
-    """The output of foamDictionary ARGS (StudyError if it fails)."""
-    run = subprocess.run(["foamDictionary"] + list(args),
+    """The output of foamDictionary -precision 17 ARGS (StudyError if it
+    fails): an entry set writes the whole file again, every number at 17
+    digits (foamDictionary's default 6 would round the others: pi to
+    3.14159)."""
+    run = subprocess.run(["foamDictionary", "-precision", "17"] + list(args),
                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                          universal_newlines=True)
     if run.returncode != 0:
@@ -94,3 +98,16 @@ def joint_map(log_text):
         joints.append(Joint(int(m.group(1)), m.group(2), m.group(3),
                             m.group(4)))
     return joints
+
+
+def write_summary(path, keys):
+    """keys merged into the JSON object of path (made if absent): each
+    study writes its own keys of a results folder's summary.json."""
+    summary = {}
+    if os.path.isfile(path):
+        with open(path) as f:
+            summary = json.load(f)
+    summary.update(keys)
+    with open(path, "w") as f:
+        json.dump(summary, f, indent=1)
+        f.write("\n")
