@@ -26,11 +26,14 @@ Description
     - evaluate() gives the consistent state against the dense oracle;
     - restart from the written model and state continues identically
       (model restart: no composite joint, see models/restart);
-    - write() writes g.
+    - write() writes g;
+    - nIter, accelerationRelaxation and accelerationDamping out of their
+      ranges are FatalIOErrors naming the key, the value and the range.
 
 \*---------------------------------------------------------------------------*/
 
 #include "rigidBodyTests.H"
+#include "expectError.H"
 
 // * * * * * * * * * * * * * * * eABAMotion tests  * * * * * * * * * * * * * //
 
@@ -257,6 +260,42 @@ TEST(eABAMotion, WriteIncludesGravity)
 
     ASSERT_TRUE(written.found("g"));
     EXPECT_EQ(written.get<vector>("g"), motion.g());
+}
+
+
+
+// nIter >= 1, accelerationRelaxation and accelerationDamping in (0, 1]
+// (readAllowed): a value outside is refused, the closed end 1 accepted
+TEST(eABAMotion, RefusesNumbersOutOfRange)
+{
+    const bool throwingIO = FatalIOError.throwExceptions();
+
+    expectIOError
+    (
+        [](){ testMotion m(runTime(), harmonicCase("Newmark", 0, 1)); },
+        {"nIter 0:", "a value >= 1 is allowed"}
+    );
+    for (const scalar a : {0.0, 1.5})
+    {
+        expectIOError
+        (
+            [&](){ testMotion m(runTime(), harmonicCase("Newmark", 1, a)); },
+            {
+                "accelerationRelaxation " + name(a) + ":",
+                "a value in (0, 1] is allowed"
+            }
+        );
+    }
+    dictionary damped(harmonicCase("Newmark", 1, 1));
+    damped.add("accelerationDamping", 0);
+    expectIOError
+    (
+        [&](){ testMotion m(runTime(), damped); },
+        {"accelerationDamping 0:", "a value in (0, 1] is allowed"}
+    );
+    EXPECT_NO_THROW(testMotion m(runTime(), harmonicCase("Newmark", 3, 1)));
+
+    FatalIOError.throwExceptions(throwingIO);
 }
 
 
