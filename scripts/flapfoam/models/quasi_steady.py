@@ -47,6 +47,7 @@ class Wing:
 
     def __init__(self, entry):
         R = float(entry["length"][0])
+        self.length = R
         N = int(entry.get("nStrips", ["40"])[0])
         r = (np.arange(N) + 0.5)*R/N
         if entry["chordDistribution"][0] == "semiElliptic":

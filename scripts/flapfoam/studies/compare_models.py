@@ -6,13 +6,15 @@ The CFD run of a drone case against its quasi-steady run on the same tree
 (the quasi-steady model's verification): both runs' flight data (flightData.h5).
 
     flapfoam compare_models CFD_CASE QS_CASE [-o DIR] [-body wing]
-        [-md FILE]
+        [-pitchJoint J] [-md FILE]
 
 Prints, and writes as a markdown table with -md: per whole flapping cycle
 of the CFD run, the time-weighted mean C_xI and C_zI of the body in both
 runs and the CFD/QS ratio of C_zI; the largest differences of x(t), z(t)
 (joints q_1, q_0: surge and heave) in mm and relative to the QS run's
-largest displacement.  Writes DIR/compareModels-coefficients.png (C_xI,
+largest displacement; with -pitchJoint J (the body pitch, e.g. q_2 of the
+body-wing drone) the joint's angle at each cycle end in both runs and the
+largest difference of those.  Writes DIR/compareModels-coefficients.png (C_xI,
 C_zI of both, downstrokes shaded: qDot of joint 2 < 0) and
 DIR/compareModels-trajectory.png (x(t), z(t) of both).  The QS run is
 interpolated to the CFD run's times.  numpy, h5py, matplotlib.
@@ -58,8 +60,15 @@ def cycle_means(t, C, period):
     return out
 
 
-def compare(cfd, qs, period):
-    """Rows of the cycle table and the trajectory differences."""
+def cycle_end_angles(t, q, period, n):
+    """The angle q [deg] at the ends of the first n cycles from t[0]."""
+    return [math.degrees(np.interp(t[0] + k*period, t, q))
+            for k in range(1, n + 1)]
+
+
+def compare(cfd, qs, period, pitch_joint=None):
+    """Rows of the cycle table (with the pitch joint's angles at the cycle
+    ends if one is given) and the trajectory differences."""
     t_c, q_c, _, c_c, _ = cfd
     t_q, q_q, _, c_q, _ = qs
     if t_q[-1] < t_c[-1] - 1e-9:
@@ -70,7 +79,13 @@ def compare(cfd, qs, period):
     for (k, cx, cz), (_, qx, qz) in zip(
             cycle_means(t_c, c_c, period),
             cycle_means(t_q[within], c_q[within], period)):
-        rows.append((k, cx, qx, cz, qz, cz/qz))
+        rows.append([k, cx, qx, cz, qz, cz/qz])
+    if pitch_joint is not None:
+        for row, a, b in zip(rows, cycle_end_angles(
+                t_c, q_c[:, pitch_joint], period, len(rows)),
+                cycle_end_angles(t_q, q_q[:, pitch_joint], period,
+                                 len(rows))):
+            row += [a, b]
     diffs = {}
     for name, j in (("x", 1), ("z", 0)):
         qs_at = np.interp(t_c, t_q, q_q[:, j])
@@ -80,13 +95,21 @@ def compare(cfd, qs, period):
 
 
 def table(rows, diffs, t):
+    pitch = bool(rows) and len(rows[0]) > 6
     lines = ["| cycle | mean C_xI CFD | mean C_xI QS | mean C_zI CFD |"
-             " mean C_zI QS | C_zI CFD/QS |", "|---:|---:|---:|---:|---:|---:|"]
-    for k, cx, qx, cz, qz, r in rows:
-        lines.append("| %d | %.4f | %.4f | %.4f | %.4f | %.3f |"
-                     % (k, cx, qx, cz, qz, r))
+             " mean C_zI QS | C_zI CFD/QS |"
+             + (" pitch at its end CFD [deg] | QS [deg] |" if pitch else ""),
+             "|---:|---:|---:|---:|---:|---:|" + ("---:|---:|" if pitch
+                                                  else "")]
+    for row in rows:
+        lines.append("| %d | %.4f | %.4f | %.4f | %.4f | %.3f |" % tuple(
+            row[:6]) + (" %.2f | %.2f |" % tuple(row[6:]) if pitch else ""))
     if not rows:
         lines.append("| (no whole cycle) | | | | | |")
+    if pitch:
+        lines.append("")
+        lines.append("pitch at the cycle ends: largest |CFD - QS| = %.2f deg"
+                     % max(abs(r[6] - r[7]) for r in rows))
     for name, (d, scale) in diffs.items():
         lines.append("")
         lines.append("%s(t), 0 to %g s: largest |CFD - QS| = %.3f mm, %.3g of"
@@ -128,6 +151,9 @@ def main():
     parser.add_argument("-body", default="wing")
     parser.add_argument("-frequency", type=float, default=20.0,
                         help="flapping frequency [Hz] (default 20)")
+    parser.add_argument("-pitchJoint", dest="pitch_joint", type=int,
+                        help="the body's pitch joint: its angle at the"
+                        " cycle ends (e.g. 2 on the body-wing drone)")
     parser.add_argument("-md", help="write the table to this file")
     a = parser.parse_args()
     if not a.frequency > 0:
@@ -136,7 +162,7 @@ def main():
     if not os.path.isdir(a.o):
         parser.error("-o %s: not a folder" % a.o)
     cfd, qs = run(a.cfd, a.body), run(a.qs, a.body)
-    rows, diffs = compare(cfd, qs, 1/a.frequency)
+    rows, diffs = compare(cfd, qs, 1/a.frequency, a.pitch_joint)
     text = table(rows, diffs, cfd[0][-1])
     print(text)
     if a.md:
