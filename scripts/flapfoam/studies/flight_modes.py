@@ -22,7 +22,9 @@ squares:
     all states    x_k+1 = A x_k + b: mu the eigenvalues of A
 
 (the constants c, b: the flight is not trimmed, its kinematics push it
-steadily).  Per identification and start, the mu of largest |mu|: a
+steadily; A, the flight's cycle map, is in PREFIX.json, comparable with
+the Floquet file's monodromy matrix).  Per identification and start, the
+mu of largest |mu|: a
 complex one is an oscillation of period 2 pi/|arg mu| cycles; it doubles in
 ln 2/ln|mu| cycles.  Then the test of a set of modes on the flight: the
 least-squares fit of every state at once, x_k = c + sum_i a_i mu_i^k v_i
@@ -94,12 +96,16 @@ def pitch_alone(theta):
     return np.roots([1.0, -a1, -a2]).astype(complex)
 
 
+def cycle_matrix(x):
+    """A of x_k+1 = A x_k + b (rows x_k), least squares."""
+    X = np.hstack([x[:-1], np.ones((len(x) - 1, 1))])
+    return np.linalg.lstsq(X, x[1:], rcond=None)[0][:-1].T
+
+
 def all_states(x):
     """(mu, V): the eigenvalues and eigenvectors of A of x_k+1 = A x_k +
     b (rows x_k)."""
-    X = np.hstack([x[:-1], np.ones((len(x) - 1, 1))])
-    sol = np.linalg.lstsq(X, x[1:], rcond=None)[0]
-    return np.linalg.eig(sol[:-1].T)
+    return np.linalg.eig(cycle_matrix(x))
 
 
 def describe(mu):
@@ -125,7 +131,9 @@ def identify(states, starts, pitch):
                                  s, len(states) - 3*states.shape[1],
                                  3*states.shape[1], len(states)))
         out["pitch alone"][s] = describe(pitch_alone(states[s:, pitch]))
-        out["all states"][s] = describe(all_states(states[s:])[0])
+        A = cycle_matrix(states[s:])
+        out["all states"][s] = dict(describe(np.linalg.eigvals(A)),
+                                    matrix=A.tolist())
     return out
 
 

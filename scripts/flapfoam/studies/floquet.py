@@ -31,7 +31,7 @@ periodic (trim it first).  Per mode (eigenvalue mu of M, eigenvector v):
 |mu| (> 1: grows), ln|mu| per cycle, a complex pair's period 2 pi/|arg mu|
 cycles (a negative real mu: 2 cycles), the cycles to double (|mu| > 1)
 or to halve (|mu| < 1), ln 2/|ln|mu||, and the states v moves most (v in
-the scaled states, the largest component 1; those of 0.1 or more, with
+the scaled states, the largest component 1; those of 0.05 or more, with
 their phase).  -kick EPS: from x* + EPS Re(v) (scaled) of the mode of the
 largest |mu|, flown -kickCycles cycles beside x*'s own flight; the mode's
 coordinate (the rows of V^-1 on the difference) per cycle over the one
@@ -106,7 +106,7 @@ class Mode:
         g = self.growth_per_cycle
         return math.log(2)/abs(g) if g != 0 else math.inf
 
-    def states(self, names, least=0.1):
+    def states(self, names, least=0.05):
         """[(name, |v_i|, phase deg)] of the components of |v_i| >= least,
         largest first."""
         order = np.argsort(-abs(self.vector))
@@ -238,13 +238,17 @@ def plot(path, floquet, kick_coordinates=None):
     plt = pyplot()
     panels = 3 if kick_coordinates is not None else 2
     fig, axes = plt.subplots(1, panels, figsize=(5.2*panels, 4.4))
-    a = np.linspace(0, 2*np.pi, 200)
-    axes[0].plot(np.cos(a), np.sin(a), "k-", lw=0.8)
+    a = np.linspace(0, 2*np.pi, 2000)
+    axes[0].plot(np.cos(a), np.sin(a), "k-", lw=0.8, label="|mu| = 1")
     for i, m in enumerate(floquet.modes):
         axes[0].plot(m.multiplier.real, m.multiplier.imag, "o", ms=8,
                      label="%d: |mu| %.4f%s" % (i, m.modulus, ", T %.3g"
                                                  % m.period_cycles
                                                  if m.period_cycles else ""))
+    mu = np.array([m.multiplier for m in floquet.modes])
+    half = max(0.15, 1.2*np.max(abs(mu - np.mean(mu.real))))
+    axes[0].set_xlim(np.mean(mu.real) - half, np.mean(mu.real) + half)
+    axes[0].set_ylim(-half, half)
     axes[0].set_aspect("equal")
     axes[0].set_xlabel("Re mu")
     axes[0].set_ylabel("Im mu")
