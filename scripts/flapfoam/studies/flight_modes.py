@@ -2,10 +2,10 @@
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """
-The cycle-to-cycle modes of a flown flight (e.g. the CFD ascent),
-identified from its states at the cycle ends, against the Floquet modes of
-a quasi-steady trim (flapfoam floquet's PREFIX.json): is the flight's
-swing of pitch and forward speed the QS model's unstable mode?
+The cycle-to-cycle modes of a flown flight (a CFD run), identified from
+its states at the cycle ends, against the Floquet modes of a quasi-steady
+trim (flapfoam floquet's PREFIX.json): is a CFD flight's swing of pitch
+and forward speed the QS model's unstable mode?
 
     flapfoam flight_modes RUN -floquet PREFIX.json [-period T]
         [-from 1,2,3,5] [-pitch 2] [-speed 1] [-o PREFIX] [-summary FILE]
