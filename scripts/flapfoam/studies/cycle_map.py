@@ -52,13 +52,43 @@ ROTATIONS = ("Rx", "Ry", "Rz")
 class MapSettings:
     """How the case is flown: the case folder, its variants (Allrun
     -variant), the fixed time step (None: the case's), the folder of the
-    trials, how many run at a time, and whether to keep their folders."""
+    trials, how many run at a time, whether to keep their folders, and
+    dictionary edits after the variants' (FILE, ENTRY, VALUE: Allrun
+    -set; read_edits)."""
     case: str
     variants: list = field(default_factory=list)
     delta_t: float = None
     work_dir: str = "/tmp/flapFoam-cycleMap"
     np: int = 1
     keep: bool = False
+    edits: list = field(default_factory=list)
+
+    def edit_lines(self):
+        """The edits of the variants, then the edits, as (FILE, ENTRY,
+        VALUE)."""
+        lines = []
+        for v in self.variants:
+            lines += read_edits(os.path.join(self.case, "variants", v))
+        return lines + list(self.edits)
+
+
+def read_edits(path):
+    """[(FILE, ENTRY, VALUE)] of a file of dictionary edits in the format
+    of a case variant: a line "FILE ENTRY VALUE" each (VALUE the rest of
+    the line), # comments."""
+    if not os.path.isfile(path):
+        raise StudyError("%s: no such file of edits (allowed: a case variant"
+                         "'s format, FILE ENTRY VALUE a line)" % path)
+    edits = []
+    with open(path) as f:
+        for line in f:
+            words = line.split(None, 2)
+            if words and not words[0].startswith("#"):
+                if len(words) < 3:
+                    raise StudyError("%s: '%s': not allowed (FILE ENTRY"
+                                     " VALUE)" % (path, line.strip()))
+                edits.append((words[0], words[1], words[2].strip()))
+    return edits
 
 
 @dataclass
@@ -158,6 +188,8 @@ class CycleMap:
         os.makedirs(settings.work_dir, exist_ok=True)
         options = list(itertools.chain(*(("-variant", v)
                                          for v in settings.variants)))
+        options += list(itertools.chain(*(("-set",) + tuple(e)
+                                          for e in settings.edits)))
         if settings.delta_t is not None:
             options += ["-deltaT", repr(settings.delta_t)]
         self.folder = qs_case.set_up(os.path.abspath(settings.case),
@@ -203,6 +235,16 @@ class CycleMap:
         return sum(float(b.get("mass", ["0"])[0])
                    for b in self.coeffs.get("bodies", {}).values()
                    if isinstance(b, dict))
+
+    def aerodynamics(self):
+        """{wing: {key: number}} of the aerodynamics entry's numbers (the
+        coefficients a result was found with)."""
+        out = {}
+        for name, e in self.coeffs.get("aerodynamics", {}).items():
+            if isinstance(e, dict):
+                out[name] = {k: float(v[0]) for k, v in e.items()
+                             if len(v) == 1 and _number(v[0])}
+        return out
 
     def initial_state(self):
         """The state of the dictionary's q and qDot (zero where absent)."""
@@ -303,6 +345,14 @@ class CycleMap:
     def mean_velocity(self, flight):
         """The free translations' mean velocity over each cycle [m/s]."""
         return np.diff(flight.positions, axis=0)/self.period
+
+
+def _number(word):
+    try:
+        float(word)
+        return True
+    except ValueError:
+        return False
 
 
 def cycle_mean_loads(folder, layout, weight):

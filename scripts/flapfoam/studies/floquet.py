@@ -9,11 +9,13 @@ per mode, the period, the time to double or halve and the states it moves
 most; optionally a kick along the most unstable mode, flown.
 
     flapfoam floquet [-case cases/bodyWingDrone] [-variant hover ...]
-        [-deltaT DT] [-step 1e-5] [-kick 1e-4] [-kickCycles 4] [-np 1]
-        [-o DIR] [-dir DIR] [-keep]
+        [-edits FILE] [-deltaT DT] [-step 1e-5] [-kick 1e-4]
+        [-kickCycles 4] [-np 1] [-o PREFIX] [-summary FILE] [-dir DIR]
+        [-keep]
 
 The flight: the case with its variants (e.g. one written by flapfoam trim
--write), its kinematics and its initial state (the dictionary's q, qDot) at
+-write) and -edits (e.g. a trim's PREFIX.variant), its kinematics and its
+initial state (the dictionary's q, qDot) at
 the start of a cycle, x*; the state (flapfoam.studies.cycle_map): the free
 rotations' angles and every free joint's velocity (the positions of free
 translations are left out: the map does not depend on them, each would add
@@ -29,15 +31,18 @@ periodic (trim it first).  Per mode (eigenvalue mu of M, eigenvector v):
 |mu| (> 1: grows), ln|mu| per cycle, a complex pair's period 2 pi/|arg mu|
 cycles (a negative real mu: 2 cycles), the cycles to double (|mu| > 1)
 or to halve (|mu| < 1), ln 2/|ln|mu||, and the states v moves most (v in
-the scaled states, the largest component 1; those of 0.1 or more, with
+the scaled states, the largest component 1; those of 0.05 or more, with
 their phase).  -kick EPS: from x* + EPS Re(v) (scaled) of the mode of the
 largest |mu|, flown -kickCycles cycles beside x*'s own flight; the mode's
 coordinate (the rows of V^-1 on the difference) per cycle over the one
-before, against mu.  -o DIR: DIR/floquet.json, DIR/floquetModes.png and
-the Floquet keys merged into DIR/summary.json.  numpy, matplotlib.
+before, against mu.  -o PREFIX: PREFIX.json (the modes, the monodromy
+matrix, the fixed point), PREFIX.png (the multipliers, the modes, the
+kick); -summary FILE: the Floquet keys merged into FILE (a results
+folder's summary.json).  numpy, matplotlib.
 """
 
 import argparse
+import json
 import math
 import os
 import sys
@@ -47,8 +52,14 @@ import numpy as np
 
 from flapfoam.errors import run_tool
 from flapfoam.paths import project_path
-from flapfoam.studies.cycle_map import CycleMap, MapSettings
+from flapfoam.studies.cycle_map import CycleMap, MapSettings, read_edits
 from flapfoam.studies.qs_case import StudyError, write_summary
+
+# the Floquet keys of the results' summary.json (PREFIX.json has them all)
+SUMMARY_KEYS = ("floquet_multipliers", "floquet_states",
+                "floquet_step_scaled", "floquet_period_s", "floquet_fixed_point_mismatch",
+                "floquet_modes", "unstable_mode_period_cycles",
+                "unstable_mode_doubling_cycles", "floquet_kick_ratio_error")
 
 
 def monodromy(phi, x, steps):
@@ -95,7 +106,7 @@ class Mode:
         g = self.growth_per_cycle
         return math.log(2)/abs(g) if g != 0 else math.inf
 
-    def states(self, names, least=0.1):
+    def states(self, names, least=0.05):
         """[(name, |v_i|, phase deg)] of the components of |v_i| >= least,
         largest first."""
         order = np.argsort(-abs(self.vector))
@@ -140,6 +151,7 @@ class Floquet:
     names: list
     scales: np.ndarray
     step: float
+    period: float = None
 
     def unstable(self):
         """The mode of the largest |mu| if it is above 1, else None."""
@@ -161,7 +173,7 @@ def analyse(cycle_map, step):
     mismatch = float(np.max(abs((images[0] - x)/layout.scales)))
     M = monodromy(phi, x, step*layout.scales)
     return Floquet(x, mismatch, M, modes(M, layout.scales), layout.names,
-                   layout.scales, step)
+                   layout.scales, step, cycle_map.period)
 
 
 def kick(cycle_map, floquet, eps, cycles):
@@ -197,14 +209,16 @@ def summary(floquet, kick_ratios=None):
         "floquet_multipliers": [[m.multiplier.real, m.multiplier.imag]
                                 for m in floquet.modes],
         "floquet_states": floquet.names,
+        "floquet_state_scales": floquet.scales.tolist(),
         "floquet_step_scaled": floquet.step,
+        "floquet_period_s": floquet.period,
         "floquet_fixed_point_mismatch": floquet.mismatch,
         "floquet_modes": [{
             "multiplier": [m.multiplier.real, m.multiplier.imag],
             "modulus": m.modulus,
             "period_cycles": m.period_cycles,
-            "doubling_or_halving_cycles": m.doubling_cycles,
-            "grows": m.modulus > 1,
+            "doubling_cycles": m.doubling_cycles,
+            "grows": bool(m.modulus > 1),
             "states": m.states(floquet.names)} for m in floquet.modes],
         "unstable_mode_period_cycles":
             unstable.period_cycles if unstable else None,
@@ -224,13 +238,17 @@ def plot(path, floquet, kick_coordinates=None):
     plt = pyplot()
     panels = 3 if kick_coordinates is not None else 2
     fig, axes = plt.subplots(1, panels, figsize=(5.2*panels, 4.4))
-    a = np.linspace(0, 2*np.pi, 200)
-    axes[0].plot(np.cos(a), np.sin(a), "k-", lw=0.8)
+    a = np.linspace(0, 2*np.pi, 2000)
+    axes[0].plot(np.cos(a), np.sin(a), "k-", lw=0.8, label="|mu| = 1")
     for i, m in enumerate(floquet.modes):
         axes[0].plot(m.multiplier.real, m.multiplier.imag, "o", ms=8,
                      label="%d: |mu| %.4f%s" % (i, m.modulus, ", T %.3g"
                                                  % m.period_cycles
                                                  if m.period_cycles else ""))
+    mu = np.array([m.multiplier for m in floquet.modes])
+    half = max(0.15, 1.2*np.max(abs(mu - np.mean(mu.real))))
+    axes[0].set_xlim(np.mean(mu.real) - half, np.mean(mu.real) + half)
+    axes[0].set_ylim(-half, half)
     axes[0].set_aspect("equal")
     axes[0].set_xlabel("Re mu")
     axes[0].set_ylabel("Im mu")
@@ -268,13 +286,15 @@ def arguments(argv):
     parser.add_argument("-case", default=project_path("cases",
                                                       "bodyWingDrone"))
     parser.add_argument("-variant", action="append", default=[])
+    parser.add_argument("-edits", metavar="FILE")
     parser.add_argument("-deltaT", dest="delta_t", type=float)
     parser.add_argument("-step", type=float, default=1e-5)
     parser.add_argument("-kick", type=float)
     parser.add_argument("-kickCycles", dest="kick_cycles", type=int,
                         default=4)
     parser.add_argument("-np", type=int, default=1)
-    parser.add_argument("-o", metavar="DIR")
+    parser.add_argument("-o", metavar="PREFIX")
+    parser.add_argument("-summary", metavar="FILE")
     parser.add_argument("-dir", default="/tmp/flapFoam-floquet")
     parser.add_argument("-keep", action="store_true")
     args = parser.parse_args(argv)
@@ -289,12 +309,30 @@ def arguments(argv):
     return args
 
 
+def write_outputs(args, floquet, ratios, coordinates):
+    """PREFIX.json, PREFIX.png (-o) and the summary's keys (-summary)."""
+    keys = summary(floquet, ratios)
+    if args.o:
+        os.makedirs(os.path.dirname(os.path.abspath(args.o)), exist_ok=True)
+        with open(args.o + ".json", "w") as f:
+            json.dump(dict(keys, floquet_monodromy=floquet.M.tolist(),
+                           floquet_fixed_point=floquet.x.tolist()), f,
+                      indent=1)
+        plot(args.o + ".png", floquet, coordinates)
+        print("floquet: wrote %s.json, %s.png" % (args.o, args.o))
+    if args.summary:
+        write_summary(args.summary, {k: v for k, v in keys.items()
+                                     if k in SUMMARY_KEYS})
+        print("floquet: wrote the Floquet keys into %s" % args.summary)
+
+
 def main(argv=None):
     args = arguments(argv)
     try:
         cycle_map = CycleMap(MapSettings(
             os.path.abspath(args.case), args.variant, args.delta_t,
-            os.path.abspath(args.dir), args.np, args.keep))
+            os.path.abspath(args.dir), args.np, args.keep,
+            read_edits(args.edits) if args.edits else []))
         cycle_map.prepare()
         floquet = analyse(cycle_map, args.step)
         print("floquet: fixed point x* = %s; |Phi(x*) - x*| %.3g (scaled)%s"
@@ -318,17 +356,7 @@ def main(argv=None):
                       args.kick, ", ".join("%.6f %+.6fi" % (r.real, r.imag)
                                            for r in ratios), mu.real,
                       mu.imag, np.max(abs(ratios - mu))/abs(mu)))
-        if args.o:
-            os.makedirs(args.o, exist_ok=True)
-            keys = summary(floquet, ratios)
-            write_summary(os.path.join(args.o, "floquet.json"), dict(
-                keys, floquet_monodromy=floquet.M.tolist(),
-                floquet_fixed_point=floquet.x.tolist()))
-            write_summary(os.path.join(args.o, "summary.json"), keys)
-            plot(os.path.join(args.o, "floquetModes.png"), floquet,
-                 coordinates)
-            print("floquet: wrote %s/floquet.json, summary.json,"
-                  " floquetModes.png" % args.o)
+        write_outputs(args, floquet, ratios, coordinates)
     except StudyError as e:
         sys.exit("floquet: %s" % e)
 

@@ -9,9 +9,10 @@ dynamics (rigidBodySimulate, not cycle-averaged) comes back to the same
 state with the target's mean velocity: a periodic flight.
 
     flapfoam trim [-case cases/bodyWingDrone] [-variant V ...]
-        [-climb VZ] [-forward VX] [-deltaT DT] [-trimDict FILE]
-        [-tolerance 1e-8] [-maxIterations 20] [-fdStep 1e-6] [-np 1]
-        [-write NAME] [-o DIR] [-dir DIR] [-keep]
+        [-edits FILE] [-climb VZ] [-forward VX] [-deltaT DT]
+        [-trimDict FILE] [-tolerance 1e-8] [-maxIterations 20]
+        [-fdStep 1e-6] [-np 1] [-write NAME] [-o PREFIX] [-summary FILE]
+        [-dir DIR] [-keep]
 
 Target: the mean velocity over a cycle of the free translations, -climb
 along z and -forward along x [m/s] (both 0: hover).  Variables: the case's
@@ -23,7 +24,9 @@ system/trimDict (or -trimDict FILE),
         flapping.offset     (-0.4 0.4);
     }
 
-ENTRY an imposedMotion entry of the case's dictionary (with the variants),
+ENTRY an imposedMotion entry of the case's dictionary (with the variants
+and -edits FILE: dictionary edits in a variant's format, e.g. a trim's
+PREFIX.variant),
 KEY one of the keys its type lets a trim vary (wang: amplitude offset phase
 K; harmonic: amplitude offset phase; never the frequency: every trial has
 the same cycle and time step); a trial never leaves the range.  Unknowns:
@@ -44,11 +47,13 @@ Prints the iterations, the trial runs and the time; the trimmed values;
 the residuals: the state mismatch after a cycle (scaled, and per component
 in SI) and the cycle-mean aerodynamic force over the weight along each
 free translation (from a run with the case's flight data).  -write NAME:
-the case variant CASE/variants/NAME (the given variants' edits, then the
-variables and q, qDot of the trimmed state), flown by
-Allrun -model quasiSteady -variant NAME.  -o DIR: DIR/trim.json,
-DIR/trimConvergence.png and the trim's keys merged into DIR/summary.json.
-numpy, matplotlib.
+the case variant CASE/variants/NAME (the given variants' and -edits'
+lines, then the variables and q, qDot of the trimmed state), flown by
+Allrun -model quasiSteady -variant NAME.  -o PREFIX: PREFIX.json (the
+result), PREFIX.variant (the same lines: flapfoam floquet -edits
+PREFIX.variant analyses the trim without a variant in the case) and
+PREFIX.png (the convergence); -summary FILE: the trim's keys merged into
+FILE (a results folder's summary.json).  numpy, matplotlib.
 """
 
 import argparse
@@ -59,6 +64,7 @@ import os
 import re
 import shutil
 import sys
+import textwrap
 import time
 from dataclasses import dataclass, field
 
@@ -68,7 +74,7 @@ from flapfoam.errors import run_tool
 from flapfoam.io.foam_dict import read_foam_dict
 from flapfoam.paths import project_path
 from flapfoam.studies.cycle_map import (COEFFS, CycleMap, MapSettings,
-                                        cycle_mean_loads)
+                                        cycle_mean_loads, read_edits)
 from flapfoam.studies.qs_case import StudyError, write_summary
 
 AXES = {"x": "forward", "z": "climb"}
@@ -76,7 +82,8 @@ AXES = {"x": "forward", "z": "climb"}
 # the trim's keys of the results' summary.json (trim.json has them all)
 SUMMARY_KEYS = ("trim_residual_state", "trim_residual_force_over_weight",
                 "trim_target_mean_velocity_m_per_s", "trim_variables",
-                "trim_iterations", "trim_runs", "trim_seconds")
+                "trim_iterations", "trim_runs", "trim_seconds",
+                "trim_aerodynamics")
 
 
 @dataclass
@@ -268,7 +275,7 @@ class Newton:
             history.append(Iteration(z, r, self.runs,
                                      time.time() - self.start))
             self.report(self.line(history))
-            for j in range(self.p.k):
+            for j in [i for i in self.p.unknown if i < self.p.k]:
                 at = z[j] in (self.p.lower[j], self.p.upper[j])
                 held[j] = held.get(j, 0) + 1 if at else 0
                 if held[j] >= self.s.bound_iterations:
@@ -286,13 +293,14 @@ class BoundError(StudyError):
 
 def reachable(problem, settings, error):
     """The message of a target out of reach: the target component the
-    held variable moves most, trimmed at the variable's min and max."""
+    held variable moves most, trimmed at the variable's min and max (the
+    variable fixed there, that component free)."""
     p, j = problem, error.index
     rows = np.arange(p.n, p.n + len(p.axes))
     if not len(rows):
-        return "no free translation: nothing to reach"
+        return "%s stays at the end of its range: no trim" % p.names[j]
     row = rows[int(np.argmax(abs(error.jacobian[rows, j])))]
-    axis = p.axes[row - p.n]
+    axis, target = p.axes[row - p.n], p.z0[p.k + row]
     found = []
     for bound in (p.lower[j], p.upper[j]):
         q = copy.copy(p)
@@ -301,15 +309,17 @@ def reachable(problem, settings, error):
         z[j] = bound
         try:
             z = Newton(q, settings).solve(z)[-1].z
-            found.append("%.4g m/s at %s = %g" % (z[p.k + row], p.names[j],
+            found.append("%.6g m/s at %s = %g" % (z[p.k + row], p.names[j],
                                                   bound))
         except StudyError as e:
-            found.append("none found at %s = %g (%s)" % (p.names[j], bound,
-                                                          e))
-    return ("the target is out of reach: %s stays at the end of its range"
-            " (%g %g) of the trimDict; with it at its ends the trim's mean"
-            " u_%s is %s" % (p.names[j], p.lower[j], p.upper[j], axis,
-                             "; ".join(found)))
+            found.append("no trim at %s = %g (%s)" % (p.names[j], bound, e))
+    return ("the target mean u_%s = %g m/s is out of reach: %s stays at the"
+            " end of its range (%g %g) in the trimDict; trimmed with it at"
+            " the range's ends, the mean u_%s is %s: the reachable range"
+            " lies between (a wider range in the trimDict, or another"
+            " variable, reaches further)" % (
+                axis, target, p.names[j], p.lower[j], p.upper[j], axis,
+                " and ".join(found)))
 
 
 @dataclass
@@ -355,6 +365,7 @@ class TrimResult:
             "trim_seconds": round(last.seconds, 2),
             "trim_delta_t_s": p.map.delta_t,
             "trim_period_s": p.map.period,
+            "trim_aerodynamics": p.map.aerodynamics(),
         }
 
 
@@ -395,36 +406,36 @@ def variant_lines(result, settings, header):
                          ["(%s)" % " ".join("%r" % float(a) for a in v)
                           for v in (q, q_dot)]))
     lines = ["# " + h for h in header]
-    for v in settings.map.variants:
-        with open(os.path.join(settings.map.case, "variants", v)) as f:
-            for line in f:
-                words = line.split()
-                if words and not words[0].startswith("#") and \
-                        not (words[0] == mesh_dict and words[1] in own):
-                    lines.append(line.rstrip("\n"))
+    lines += ["%s %s %s" % e for e in settings.map.edit_lines()
+              if not (e[0] == mesh_dict and e[1] in own)]
     lines += ["%s %s %s" % (mesh_dict, e, v) for e, v in values_of.items()]
     return lines
 
 
-def header_lines(result, settings, command):
-    """The variant's comment: what it is, how it was made, its residuals."""
+def header_lines(result, command):
+    """The variant's comment: what it is, how it was made, its residuals,
+    the aerodynamics it was trimmed with (lines of at most 76 columns)."""
     s = result.summary()
     target = ", ".join("mean u_%s %g m/s" % a for a in
                        s["trim_target_mean_velocity_m_per_s"].items())
-    return ["A periodic flight of the quasi-steady model, found by",
-            "    " + command,
-            "(target %s; deltaT %g s, cycle %g s): the trim variables and"
-            % (target, s["trim_delta_t_s"], s["trim_period_s"]),
-            "the free joints' state at t = 0 (q, qDot in q index order; the"
-            " free",
-            "translations at 0, the prescribed joints set by their motions)."
-            " After",
-            "one cycle the state comes back within %.2g (scaled: rad, rad"
-            " per cycle," % s["trim_residual_state"],
-            "g T); cycle-mean aerodynamic force over the weight: %s."
-            % ", ".join("%s %.9f" % a for a in
-                        s["trim_mean_force_over_weight"].items()),
-            "Written by flapfoam trim -write: rerun it rather than edit."]
+    text = ("A periodic flight of the quasi-steady model (target %s;"
+            " deltaT %g s, cycle %g s): the trim variables and the free"
+            " joints' state at t = 0 (q, qDot in q index order; the free"
+            " translations at 0, the prescribed joints set by their"
+            " motions).  After one cycle the state comes back within %.2g"
+            " (scaled: rad, rad per cycle, g T); the cycle-mean aerodynamic"
+            " force over the weight: %s.  Trimmed with the aerodynamics"
+            " entry %s: after a change of the case's dictionary, trim again"
+            " (the same command).  Written by flapfoam trim: rerun it rather"
+            " than edit." % (
+                target, s["trim_delta_t_s"], s["trim_period_s"],
+                s["trim_residual_state"], ", ".join(
+                    "%s %.9f" % a for a in
+                    s["trim_mean_force_over_weight"].items()),
+                "; ".join("%s: %s" % (w, " ".join("%s %.8g" % a
+                                                  for a in c.items()))
+                          for w, c in s["trim_aerodynamics"].items())))
+    return ["Made by", "    " + command] + textwrap.wrap(text, 76)
 
 
 def plot_convergence(path, result, tolerance):
@@ -440,13 +451,15 @@ def plot_convergence(path, result, tolerance):
     axes[0].set_xlabel("Newton iteration")
     axes[0].set_ylabel("largest scaled residual")
     for j in p.unknown:
-        v = np.array([h.z[j] for h in history])
-        axes[1].plot(its, (v - v[-1])/p.scales[j], "o-", label=p.names[j])
+        v = abs(np.array([h.z[j] for h in history]) - history[-1].z[j])
+        axes[1].semilogy(its[:-1], v[:-1]/p.scales[j], "o-",
+                         label=p.names[j])
     axes[1].set_xlabel("Newton iteration")
-    axes[1].set_ylabel("(unknown - trimmed)/scale")
+    axes[1].set_ylabel("|unknown - trimmed| / scale")
     axes[1].legend(fontsize=7)
     for ax in axes:
         ax.grid(True, alpha=0.3)
+        ax.set_xticks(its)
     s = result.summary()
     fig.suptitle("trim: %d iterations, %d one-cycle runs, %.1f s; state"
                  " residual %.2g, force/weight residual %.2g"
@@ -464,6 +477,7 @@ def arguments(argv):
     parser.add_argument("-case", default=project_path("cases",
                                                       "bodyWingDrone"))
     parser.add_argument("-variant", action="append", default=[])
+    parser.add_argument("-edits", metavar="FILE")
     parser.add_argument("-climb", type=float, help="mean u_z [m/s]")
     parser.add_argument("-forward", type=float, help="mean u_x [m/s]")
     parser.add_argument("-deltaT", dest="delta_t", type=float)
@@ -474,7 +488,8 @@ def arguments(argv):
     parser.add_argument("-fdStep", dest="fd_step", type=float, default=1e-6)
     parser.add_argument("-np", type=int, default=1)
     parser.add_argument("-write", metavar="NAME")
-    parser.add_argument("-o", metavar="DIR")
+    parser.add_argument("-o", metavar="PREFIX")
+    parser.add_argument("-summary", metavar="FILE")
     parser.add_argument("-dir", default="/tmp/flapFoam-trim")
     parser.add_argument("-keep", action="store_true")
     args = parser.parse_args(argv)
@@ -497,7 +512,8 @@ def settings_of(args):
               if getattr(args, o) is not None}
     return TrimSettings(
         MapSettings(os.path.abspath(args.case), args.variant, args.delta_t,
-                    os.path.abspath(args.dir), args.np, args.keep),
+                    os.path.abspath(args.dir), args.np, args.keep,
+                    read_edits(args.edits) if args.edits else []),
         target, args.trim_dict, args.tolerance, args.max_iterations,
         args.fd_step)
 
@@ -519,34 +535,41 @@ def report_result(result):
                   s["trim_mean_force_over_weight"].items())))
 
 
+def write_outputs(args, result, settings, command):
+    """The variant (-write), PREFIX.json, .variant, .png (-o) and the
+    summary's keys (-summary)."""
+    lines = variant_lines(result, settings, header_lines(result, command))
+    paths = []
+    if args.write:
+        paths.append(os.path.join(settings.map.case, "variants", args.write))
+    if args.o:
+        os.makedirs(os.path.dirname(os.path.abspath(args.o)), exist_ok=True)
+        paths.append(args.o + ".variant")
+        with open(args.o + ".json", "w") as f:
+            json.dump(dict(result.summary(), trim_command=command), f,
+                      indent=1)
+        plot_convergence(args.o + ".png", result, settings.tolerance)
+        print("trim: wrote %s.json, %s.png" % (args.o, args.o))
+    for path in paths:
+        with open(path, "w") as f:
+            f.write("\n".join(lines) + "\n")
+        print("trim: wrote %s" % path)
+    if args.summary:
+        write_summary(args.summary, {k: v for k, v in result.summary().items()
+                                     if k in SUMMARY_KEYS})
+        print("trim: wrote the trim's keys into %s" % args.summary)
+
+
 def main(argv=None):
     args = arguments(argv)
-    settings = settings_of(args)
     try:
+        settings = settings_of(args)
         result = trim(settings, lambda line: print("trim: " + line,
                                                    flush=True))
         report_result(result)
         command = "flapfoam trim " + " ".join(argv if argv is not None
                                               else sys.argv[1:])
-        if args.write:
-            path = os.path.join(settings.map.case, "variants", args.write)
-            with open(path, "w") as f:
-                f.write("\n".join(variant_lines(
-                    result, settings, header_lines(result, settings,
-                                                   command))) + "\n")
-            print("trim: wrote %s" % path)
-        if args.o:
-            os.makedirs(args.o, exist_ok=True)
-            summary = dict(result.summary(), trim_command=command)
-            with open(os.path.join(args.o, "trim.json"), "w") as f:
-                json.dump(summary, f, indent=1)
-            write_summary(os.path.join(args.o, "summary.json"),
-                          {k: v for k, v in summary.items()
-                           if k in SUMMARY_KEYS})
-            plot_convergence(os.path.join(args.o, "trimConvergence.png"),
-                             result, settings.tolerance)
-            print("trim: wrote %s/trim.json, summary.json,"
-                  " trimConvergence.png" % args.o)
+        write_outputs(args, result, settings, command)
     except StudyError as e:
         sys.exit("trim: %s" % e)
 
