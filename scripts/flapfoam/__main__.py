@@ -114,7 +114,10 @@ def main(argv=None):
         sys.stderr.write("flapfoam: no tool '%s' (flapfoam -help lists them)"
                          "\n" % name)
         return 2
-    run(found[name][0], ["flapfoam " + name] + argv[1:])
+    # -help, OpenFOAM's spelling, is every tool's -h (argparse would read
+    # it as -h with the value 'elp')
+    run(found[name][0], ["flapfoam " + name]
+        + ["-h" if a == "-help" else a for a in argv[1:]])
     return 0
 
 

@@ -99,9 +99,10 @@ def test_unknown_tool_is_refused(tmp_path):
 
 
 @pytest.mark.parametrize("tool", sorted(command.tools()))
-def test_every_tool_answers_help_under_its_name(tool, capsys):
+@pytest.mark.parametrize("option", ["-h", "-help"])
+def test_every_tool_answers_help_under_its_name(tool, option, capsys):
     with pytest.raises(SystemExit) as end:
-        command.main([tool, "-h"])
+        command.main([tool, option])
     out = capsys.readouterr().out
     assert end.value.code in (0, None), out
     assert out.startswith("usage: flapfoam %s " % tool), out

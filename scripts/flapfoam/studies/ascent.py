@@ -340,7 +340,15 @@ def summarise(inputs):
         s["max_abs_dx_m"], s["max_abs_dz_m"] = max_gaps(run, others[-1][1])
     plot_trajectory(run, others, inputs.out)
     s["lift_peaks_CzI"] = lift_peaks(run, PAPER["lift_cycles"])
-    plot_lift_cycles(run, PAPER["lift_cycles"], inputs.out)
+    covered = [n for n in PAPER["lift_cycles"] if n in s["lift_peaks_CzI"]]
+    if covered:
+        plot_lift_cycles(run, covered, inputs.out)
+    else:
+        print("ascent: no liftCycles.png and no lift peaks: the run ends at"
+              " cycle %.3g, before the end of cycle %d, the first of the"
+              " paper's lift cycles (%s)"
+              % (run.t[-1]*run.f, PAPER["lift_cycles"][0],
+                 ", ".join(map(str, PAPER["lift_cycles"]))))
     plot_coefficients(run, others, inputs.out)
     plot_lev(lev, run.f, inputs.out)
     s["flight_data_thinning"] = thin_copy(
@@ -356,14 +364,22 @@ def main(argv=None):
         prog="flapfoam ascent",
         description="A production ascent's plots, flight data and "
                     "summary.json beside the paper's figures")
-    p.add_argument("run")
-    p.add_argument("-o", dest="out", required=True)
-    p.add_argument("-vacuum")
-    p.add_argument("-qs")
-    p.add_argument("-maxMB", dest="max_mb", type=float, default=20.0)
+    p.add_argument("run", help="the CFD run folder (its flight data)")
+    p.add_argument("-o", dest="out", required=True,
+                   help="the results folder (made if it does not exist)")
+    p.add_argument("-vacuum", help="a vacuum run of the same case: its"
+                   " trajectory beside")
+    p.add_argument("-qs", help="a quasi-steady run of the same case: its"
+                   " trajectory beside, the largest gaps")
+    p.add_argument("-maxMB", dest="max_mb", type=float, default=20.0,
+                   help="the copied flight data's largest size [MB] (rows"
+                   " thinned to it; default 20)")
     a = p.parse_args(argv)
-    if not os.path.isdir(a.out):
-        raise FlapFoamError("ascent: -o %s: no such folder" % a.out)
+    try:
+        os.makedirs(a.out, exist_ok=True)
+    except OSError as e:
+        raise FlapFoamError("ascent: -o %s: cannot make the folder: %s"
+                            % (a.out, e))
     s = summarise(Inputs(a.run, a.out, a.vacuum, a.qs, a.max_mb))
     for key, value in s.items():
         if key not in ("paper",):
