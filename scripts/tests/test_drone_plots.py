@@ -156,7 +156,8 @@ def test_each_drone_its_figures_and_numbers(tmp_path, capsys):
         assert pngs == sorted(p + ".png" for p in common + extra)
         assert "max |q - analytic|/amplitude = 0\n" in out
         assert "final x = -0.1 m, z = 0.1 m, xDot = -1, zDot = 1 m/s" in out
-        assert "400 steps, t = 0 ... 0.1 s (2.000 cycles)" in out
+        assert "400 rows after the first (the written steps), t = 0 ... 0.1 s"\
+            " (2 cycles)" in out
 
 
 def test_a_body_wing_run_without_its_coefficients_writes_nothing(tmp_path):

@@ -238,9 +238,10 @@ def read_run(case, coeffs):
     series = run_series.read(case)
     t = series.time
     print("plotRun: reading %s" % series.source)
-    print("plotRun: %d steps, t = %.6g ... %.6g s (%.3f cycles), %d restart "
-          "folder(s)" % (len(t) - 1, t[0], t[-1], (t[-1] - t[0])*ref.f,
-                         max(len(series.starts) - 1, 0)))
+    print("plotRun: %d rows after the first (the written steps), t = %.6g"
+          " ... %.6g s (%.6g cycles), %d restart folder(s)"
+          % (len(t) - 1, t[0], t[-1], (t[-1] - t[0])*ref.f,
+             max(len(series.starts) - 1, 0)))
     model = model_label(series.attrs, coeffs)
     print("plotRun: model %s" % model)
     return Run(series, ref, model, series.attrs.get("case") or
