@@ -141,3 +141,24 @@ def test_summary_of_a_run_without_flow_has_no_flow_rows(capsys):
     out = capsys.readouterr().out
     assert "rbd" in out and "pimple" not in out and "overset" not in out
     assert "closure" not in out
+
+
+def test_slowest_rank_tree_adds_up(capsys):
+    """A parallel run's slowest rank (its own means): the pimple parts,
+    the wait for the slowest rank among them, leave no rest; the move
+    points hold the stencil update nested in them (overset's rest 0)."""
+    from flapfoam.io.step_timers import slowest_rank_tree
+    fast = {"rank": 0, "total": 1.0, "rbd": 0.01, "overset": 0.1,
+            "oversetMovePoints": 0.04, "oversetStencil": 0.03,
+            "oversetAddressing": 0.02, "oversetInterpolate": 0.01,
+            "pimple": 0.8, "pimpleMomentum": 0.2, "pimplePressure": 0.3,
+            "pimpleTurbulence": 0.1, "pimpleSync": 0.2, "preUpdate": 0.05}
+    slow = dict(fast, rank=1, total=1.2, pimple=1.0, pimpleSync=0.0,
+                pimplePressure=0.7)
+    slowest_rank_tree("run", [fast, slow])
+    out = capsys.readouterr().out.splitlines()
+    assert out[0].startswith("run, rank 1 of 2 (the slowest")
+    rests = [float(line.split()[1]) for line in out
+             if line.split()[0] == "rest"]
+    # move points' own time; overset's and pimple's rests: none
+    assert rests == pytest.approx([0.04, 0, 0], abs=1e-12), out

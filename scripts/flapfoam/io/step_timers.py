@@ -143,7 +143,8 @@ STENCIL_PARTS = ("Transform", "Voxels", "Holes", "Donors", "Flood",
 TREE = ("step (total)", ("total",), (
     ("rbd", ("rbd",), ()),
     ("overset", ("overset",), (
-        ("move points", ("oversetMovePoints",), (
+        ("move points", ("oversetMovePoints", "oversetStencil")
+         + tuple("oversetStencil" + p for p in STENCIL_PARTS), (
             ("stencil update", ("oversetStencil",)
              + tuple("oversetStencil" + p for p in STENCIL_PARTS),
              tuple((p.lower(), ("oversetStencil" + p,), ())
@@ -156,7 +157,8 @@ TREE = ("step (total)", ("total",), (
         ("pressure", ("pimplePressure", "pimplePressureSolve"), (
             ("solve", ("pimplePressureSolve",), ()),)),
         ("turbulence", ("pimpleTurbulence", "pimpleOtherSolve"), ()),
-        ("overset interpolation", ("pimpleOversetInterpolate",), ())))))
+        ("overset interpolation", ("pimpleOversetInterpolate",), ()),
+        ("wait for the slowest rank", ("pimpleSync",), ())))))
 
 
 def tree_rows(col, node=TREE, depth=0):
@@ -177,6 +179,24 @@ def tree_rows(col, node=TREE, depth=0):
         rows.append((depth + 1, "other (function objects, writes)"
                      if depth == 0 else "rest", rest))
     return rows
+
+
+def slowest_rank_tree(label, ranks):
+    """Print, for a parallel run, the tree of the slowest rank's own means
+    (ranks: the rows of stepTimersRanks.dat): the columns of stepTimers.dat
+    are maxima over the ranks, taken from different ranks, so their parts
+    need not add up to their parent; one rank's do."""
+    if len(ranks) < 2:
+        return
+    row = max(ranks, key=lambda r: r.get("total", 0))
+    col = {c: np.array([v]) for c, v in row.items()}
+    print("%s, rank %d of %d (the slowest; its own means: its parts add up,"
+          " which the maxima above need not)" % (label, int(row["rank"]),
+                                                 len(ranks)))
+    for depth, name, v in tree_rows(col):
+        print("    %-36s %12.4g %21s %7.2f%%" % (
+            "  "*depth + name, v[0], "",
+            100*v[0]/row["total"] if row["total"] > 0 else 0))
 
 
 def summary(label, columns, data, n_startup=None):

@@ -38,7 +38,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from flapfoam.plots.backend import pyplot
-from flapfoam.io.step_timers import GROUPS, read_input, summary
+from flapfoam.io.step_timers import (GROUPS, find_files, read_input,
+                                     read_ranks, slowest_rank_tree, summary)
 from flapfoam.errors import run_tool
 
 
@@ -113,6 +114,10 @@ def chart(inputs, labels, n_startup, out):
                                 (", missing " + " ".join(missing))
                                 if columns else ""))
         means.append(summary(label, columns, data, n_startup))
+        slowest_rank_tree(label, [r for f in find_files(path) for r in
+                                  read_ranks(os.path.join(
+                                      os.path.dirname(f),
+                                      "stepTimersRanks.dat"))])
         columns_list.append(columns)
     plot(labels, means, columns_list, out)
 
