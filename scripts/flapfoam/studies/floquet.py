@@ -53,7 +53,8 @@ import numpy as np
 from flapfoam.errors import run_tool
 from flapfoam.paths import project_path
 from flapfoam.studies.cycle_map import CycleMap, MapSettings, read_edits
-from flapfoam.studies.qs_case import StudyError, write_summary
+from flapfoam.studies.qs_case import (StudyError, check_ranges,
+                                       write_summary)
 
 # the Floquet keys of the results' summary.json (PREFIX.json has them all)
 SUMMARY_KEYS = ("floquet_multipliers", "floquet_states",
@@ -298,14 +299,7 @@ def arguments(argv):
     parser.add_argument("-dir", default="/tmp/flapFoam-floquet")
     parser.add_argument("-keep", action="store_true")
     args = parser.parse_args(argv)
-    for name in ("step", "kick", "delta_t"):
-        v = getattr(args, name)
-        if v is not None and not (v > 0 and math.isfinite(v)):
-            parser.error("-%s %g: not allowed (> 0)" % (name, v))
-    for name in ("kick_cycles", "np"):
-        if getattr(args, name) < 1:
-            parser.error("-%s %d: not allowed (an integer >= 1)"
-                         % (name, getattr(args, name)))
+    check_ranges(parser, args, ("step", "kick", "delta_t"), ("kick_cycles", "np"))
     return args
 
 

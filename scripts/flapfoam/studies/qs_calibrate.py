@@ -388,33 +388,36 @@ def report(wing, rows, axes):
     return text
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+def add_run_options(parser):
+    """The options of a CFD run's wing rows (qs_calibrate's and
+    qs_moment_budget's): CASE, -dict, -wing, -momentAbout, -skip,
+    -until."""
     parser.add_argument("case", help="a CFD run with flight data")
     parser.add_argument("-dict", help="dynamicMeshDict with the aerodynamics"
                         " entry (default CASE/constant/dynamicMeshDict)")
     parser.add_argument("-wing", help="the aerodynamics entry (default: its"
                         " only one)")
-    parser.add_argument("-skip", type=int, default=0,
-                        help="steps left out at the start (default 0)")
-    parser.add_argument("-until", type=float,
-                        help="leave out the steps after this time [s] (e.g."
-                        " 0.1: the first two cycles at 20 Hz)")
-    parser.add_argument("-components", choices=("xz", "xyz"), default="xz")
     parser.add_argument("-momentAbout", dest="moment_about", metavar="BODY",
                         help="the body about whose centre of mass the flight"
                         " data's wing moment is taken (default: the"
                         " flightData momentAbout of CASE/system/controlDict,"
                         " else the wing's body)")
-    parser.add_argument("-out", help="also write the entry to this file")
-    args = parser.parse_args()
-    args.dict = args.dict or os.path.join(args.case, "constant",
-                                          "dynamicMeshDict")
-    name, entry, coeffs = wing_entry(args.dict, args.wing)
+    parser.add_argument("-skip", type=int, default=0,
+                        help="steps left out at the start (default 0)")
+    parser.add_argument("-until", type=float,
+                        help="leave out the steps after this time [s] (e.g."
+                        " 0.1: the first two cycles at 20 Hz)")
+
+
+def run_rows(args):
+    """(WingEntry, FlightRows) of the options of add_run_options."""
+    path = args.dict or os.path.join(args.case, "constant",
+                                     "dynamicMeshDict")
+    name, entry, coeffs = wing_entry(path, args.wing)
     body = entry.get("body", ["?"])[0]
     if body not in coeffs.get("bodies", {}):
         fail("%s: aerodynamics/%s: body %s is not a body of the tree"
-             " (allowed: %s)" % (args.dict, name, body,
+             " (allowed: %s)" % (path, name, body,
                                  ", ".join(coeffs.get("bodies", {}))))
     centre = vec(coeffs["bodies"][body].get("centreOfMass", ["0", "0", "0"]))
     about = args.moment_about or moment_about(args.case, body)
@@ -423,8 +426,18 @@ def main():
              % (about, ", ".join(coeffs.get("bodies", {}))))
     rows = FlightRows(args.case, (body, about), centre,
                       (args.skip, args.until))
-    text = report(WingEntry(args.dict, name, entry, coeffs), rows,
-                  args.components)
+    return WingEntry(path, name, entry, coeffs), rows
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    add_run_options(parser)
+    parser.add_argument("-components", choices=("xz", "xyz"), default="xz",
+                        help="the force components fitted (default xz)")
+    parser.add_argument("-out", help="also write the entry to this file")
+    args = parser.parse_args()
+    wing, rows = run_rows(args)
+    text = report(wing, rows, args.components)
     if args.out:
         try:
             with open(args.out, "w") as f:

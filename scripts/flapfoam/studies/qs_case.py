@@ -10,6 +10,7 @@ gain_sweep, trim, floquet).
 """
 
 import json
+import math
 import os
 import re
 import shutil
@@ -111,3 +112,19 @@ def write_summary(path, keys):
     with open(path, "w") as f:
         json.dump(summary, f, indent=1)
         f.write("\n")
+
+
+def check_ranges(parser, args, positive=(), counts=()):
+    """parser.error for an option of args (argparse dest names) out of its
+    range: positive, a finite number > 0 (None: not given); counts, an
+    integer >= 1."""
+    option = {a.dest: a.option_strings[0] for a in parser._actions
+              if a.option_strings}
+    for name in positive:
+        v = getattr(args, name)
+        if v is not None and not (v > 0 and math.isfinite(v)):
+            parser.error("%s %g: not allowed (> 0)" % (option[name], v))
+    for name in counts:
+        if getattr(args, name) < 1:
+            parser.error("%s %d: not allowed (an integer >= 1)"
+                         % (option[name], getattr(args, name)))

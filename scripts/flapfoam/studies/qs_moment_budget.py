@@ -29,12 +29,11 @@ last whole flapping cycle of them):
 
 import argparse
 import json
-import os
 
 import numpy as np
 
 from flapfoam.io import run_series
-from flapfoam.models.quasi_steady import Wing, vec
+from flapfoam.models.quasi_steady import Wing
 from flapfoam.studies import qs_calibrate as qc
 from flapfoam.errors import run_tool
 
@@ -141,34 +140,18 @@ def print_budget(b):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("case", help="a CFD run with flight data")
-    parser.add_argument("-dict", help="dynamicMeshDict with the aerodynamics"
-                        " entry (default CASE/constant/dynamicMeshDict)")
-    parser.add_argument("-wing", help="the aerodynamics entry (default: its"
-                        " only one)")
-    parser.add_argument("-momentAbout", dest="moment_about", metavar="BODY",
-                        help="as flapfoam qs_calibrate's")
-    parser.add_argument("-skip", type=int, default=0,
-                        help="steps left out at the start (default 0)")
-    parser.add_argument("-until", type=float,
-                        help="leave out the steps after this time [s]")
+    qc.add_run_options(parser)
     parser.add_argument("-json", help="also write the numbers here")
     args = parser.parse_args()
-    path = args.dict or os.path.join(args.case, "constant", "dynamicMeshDict")
-    name, entry, coeffs = qc.wing_entry(path, args.wing)
-    body = entry["body"][0]
-    about = args.moment_about or qc.moment_about(args.case, body)
-    centre = vec(coeffs["bodies"][body].get("centreOfMass", ["0"]*3))
-    rows = qc.FlightRows(args.case, (body, about), centre,
-                         (args.skip, args.until))
+    wing, rows = qc.run_rows(args)
     if rows.moment is None:
-        qc.fail("%s: no bodies/%s/moment: nothing to budget" % (rows.path,
-                                                                 body))
-    keep, over = qc.cycle_rows(rows, coeffs)
+        qc.fail("%s: no bodies/%s/moment: nothing to budget"
+                % (rows.path, wing.entry["body"][0]))
+    keep, over = qc.cycle_rows(rows, wing.coeffs)
     print("qs_moment_budget: %s, wing %s (%s), %d rows t = %g to %g s;"
-          " means %s" % (rows.path, name, path, len(rows.time), rows.time[0],
-                         rows.time[-1], over))
-    b = budget(Wing(entry), rows, run_series.read(args.case), keep)
+          " means %s" % (rows.path, wing.name, wing.path, len(rows.time),
+                         rows.time[0], rows.time[-1], over))
+    b = budget(Wing(wing.entry), rows, run_series.read(args.case), keep)
     print_budget(b)
     if args.json:
         with open(args.json, "w") as fh:

@@ -75,7 +75,8 @@ from flapfoam.io.foam_dict import read_foam_dict
 from flapfoam.paths import project_path
 from flapfoam.studies.cycle_map import (COEFFS, CycleMap, MapSettings,
                                         cycle_mean_loads, read_edits)
-from flapfoam.studies.qs_case import StudyError, write_summary
+from flapfoam.studies.qs_case import (StudyError, check_ranges,
+                                       write_summary)
 
 AXES = {"x": "forward", "z": "climb"}
 
@@ -493,14 +494,7 @@ def arguments(argv):
     parser.add_argument("-dir", default="/tmp/flapFoam-trim")
     parser.add_argument("-keep", action="store_true")
     args = parser.parse_args(argv)
-    for name in ("tolerance", "fd_step", "delta_t"):
-        v = getattr(args, name)
-        if v is not None and not (v > 0 and math.isfinite(v)):
-            parser.error("-%s %g: not allowed (> 0)" % (name, v))
-    for name in ("max_iterations", "np"):
-        if getattr(args, name) < 1:
-            parser.error("-%s %d: not allowed (an integer >= 1)"
-                         % (name, getattr(args, name)))
+    check_ranges(parser, args, ("tolerance", "fd_step", "delta_t"), ("max_iterations", "np"))
     if args.write and not re.fullmatch(r"[A-Za-z0-9_.+-]+", args.write):
         parser.error("-write %s: not allowed (a variant name: letters,"
                      " digits, _ . + -)" % args.write)
