@@ -203,14 +203,16 @@ def fit(basis, rows, components):
     return x/scale, sv[0]/sv[-1]
 
 
-def pitch_axis_basis(wing, rows):
-    """(rows, 2): the model's moment about the wing's pitch axis (about the
-    span direction) per unit CoP0 and CoP1 at every row (wing: the fitted
+def pitch_axis_basis(wing, rows, axis=None):
+    """(rows, 2): the model's moment per unit CoP0 and CoP1 (the force's
+    shift d c^ along the chord, about any point) at every row, about the
+    wing's span direction, or about a global axis (wing: the fitted
     force)."""
     basis = np.zeros((len(rows.time), 2))
     for i in range(len(rows.time)):
         st = wing.strips(rows.E[i], rows.v_origin[i], rows.omega[i])
-        m = (np.cross(st["c"], st["d_f"]) @ st["s"]) \
+        m = (np.cross(st["c"], st["d_f"]) @ (st["s"] if axis is None
+                                              else axis)) \
             * wing.chords[st["live"]]
         basis[i] = m.sum(), (m*2*st["alpha"]/math.pi).sum()
     return basis

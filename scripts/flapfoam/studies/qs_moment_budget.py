@@ -71,11 +71,7 @@ def pitching_joint(series, rows):
 def body_pitch_cop(wing, rows, error):
     """(R^2, CoP0, CoP1): a centre of pressure fitted to the error of the
     body-pitch moment (its y moment d c x dF, about any point)."""
-    basis = np.zeros((len(rows.time), 2))
-    for i in range(len(rows.time)):
-        st = wing.strips(rows.E[i], rows.v_origin[i], rows.omega[i])
-        m = np.cross(st["c"], st["d_f"])[:, 1]*wing.chords[st["live"]]
-        basis[i] = m.sum(), (m*2*st["alpha"]/np.pi).sum()
+    basis = qc.pitch_axis_basis(wing, rows, axis=np.array([0.0, 1.0, 0.0]))
     w = np.sqrt(rows.step)
     x, *_ = np.linalg.lstsq(basis*w[:, None], error*w, rcond=None)
     return qc.r_squared(error, basis @ x, rows.step), x[0], x[1]
