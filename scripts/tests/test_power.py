@@ -113,6 +113,11 @@ def test_a_window_past_the_run_and_a_missing_entry_are_refused(tmp_path):
 def test_the_command_writes_the_summary_key(tmp_path, capsys):
     run = str(made_up_run(tmp_path / "run"))
     summary = tmp_path / "summary.json"
-    power.main([run, "-from", "1", "-summary", str(summary), "-key", "p"])
+    power.main([run, "-from", "1", "-summary", str(summary), "-label", "qs"])
     assert "FM" in capsys.readouterr().out
-    assert json.loads(summary.read_text())["p"]["cycles"] == [1, 6]
+    keys = json.loads(summary.read_text())
+    assert keys["power_qs"]["cycles"] == [1, 6]
+    assert keys["power_w_per_kg_qs"] == keys["power_qs"]["power_w_per_kg"]
+    assert keys["figure_of_merit_qs"] == keys["power_qs"]["figure_of_merit"]
+    with pytest.raises(SystemExit):
+        power.main([run, "-summary", str(summary)])       # no -label

@@ -7,7 +7,7 @@ power over whole flapping cycles, per kilogram, and the figure of merit of
 the flapping wings as hovering rotors (docs/trim.md, "Power").
 
     flapfoam power RUN [RUN ...] [-from C] [-to C] [-flapping ENTRY]
-        [-radius R] [-json FILE] [-summary FILE -key NAME]
+        [-radius R] [-json FILE] [-summary FILE -label L]
 
 RUN: a drone run folder (CFD or Allrun -model quasiSteady): its flight data
 and its constant/dynamicMeshDict (the bodies' masses and inertias, g, the
@@ -31,8 +31,9 @@ last whole one), time-integrated (trapezoids: the CFD's step is adaptive):
     FM         P_ideal/P_aero, the figure of merit
 
 in W and W/kg (m: every body's mass, the tree's whole mass).  -json FILE:
-every number; -summary FILE -key NAME: {NAME: the numbers} merged into a
-results folder's summary.json.  numpy, h5py.
+every number; -summary FILE -label L (one RUN): the keys power_w_per_kg_L,
+figure_of_merit_L and power_L (every number) merged into a results
+folder's summary.json.  numpy, h5py.
 """
 
 import argparse
@@ -187,8 +188,10 @@ def arguments(argv):
     parser.add_argument("-radius", type=float)
     parser.add_argument("-json", metavar="FILE")
     parser.add_argument("-summary", metavar="FILE")
-    parser.add_argument("-key", default="power")
+    parser.add_argument("-label")
     args = parser.parse_args(argv)
+    if args.summary and not (args.label and len(args.runs) == 1):
+        parser.error("-summary: needs -label L and one RUN")
     for option, v in (("-period", args.period), ("-radius", args.radius)):
         if v is not None and not (v > 0 and math.isfinite(v)):
             parser.error("%s %g: not allowed (> 0)" % (option, v))
@@ -216,8 +219,11 @@ def main(argv=None):
         with open(args.json, "w") as f:
             json.dump(results, f, indent=1)
     if args.summary:
-        write_summary(args.summary, {args.key: results if len(results) > 1
-                                     else results[0]})
+        r = results[0]
+        write_summary(args.summary, {
+            "power_w_per_kg_" + args.label: r["power_w_per_kg"],
+            "figure_of_merit_" + args.label: r["figure_of_merit"],
+            "power_" + args.label: r})
 
 
 if __name__ == "__main__":
