@@ -39,8 +39,8 @@ import math
 import os
 import sys
 
-import sphereMesh  # this case's body component
 from flapfoam.mesh import mesh_gen
+from flapfoam.mesh import sphere_mesh
 from flapfoam.mesh import wing_mesh
 from flapfoam.mesh.block_mesh import FOAM_HEADER, write_case
 from flapfoam.mesh.parameters import file_entries
@@ -56,33 +56,13 @@ THETA_MAX = math.radians(20)
 COMPONENT = dataclasses.replace(wing_mesh.COMPONENT, root_margin=7e-3)
 
 
-class text_dict:
-    """A dictionary given as text, written like a BlockMesh"""
-
-    def __init__(self, text):
-        self.text = text
-
-    def write(self, path, header=""):
-        with open(path, "w") as fh:
-            fh.write(header + self.text)
-
-
-def refine_actions(region, margin):
-    """The body component's ball, grown by the pass's margin, added to a
-    refinement region"""
-    c = (0.0, 0.0, 0.0)
-    return [("add", "sphereToCell",
-             "origin (%.9g %.9g %.9g);\n        radius %.9g;"
-             % (c + (sphereMesh.R1 + sphereMesh.MARGIN + margin,)))]
-
-
 def main(argv=None):
-    args = mesh_gen.parse_args(__doc__, sphereMesh.LEVELS, argv)
+    args = mesh_gen.parse_args(__doc__, sphere_mesh.LEVELS, argv)
     tilts = (-THETA_MAX, 0.0, THETA_MAX)
     if args.list:
-        for name in sphereMesh.LEVELS:
+        for name in sphere_mesh.LEVELS:
             m = mesh_gen.build(name, COMPONENT, tilts=tilts)
-            _, sinfo = sphereMesh.block_mesh_dict(name)
+            _, sinfo = sphere_mesh.block_mesh_dict(name)
             print("%-9s wing %7d cells, body %6d cells, background h %.2f mm"
                   % (name, m.winfo["cellsPlanned"], sinfo["cells"],
                      1e3*m.binfo["h"]))
@@ -90,13 +70,13 @@ def main(argv=None):
 
     m = mesh_gen.build(args.level, COMPONENT,
                        mesh_gen.pose(args.phi, args.alpha), tilts)
-    stext, sinfo = sphereMesh.block_mesh_dict(args.level)
+    stext, sinfo = sphere_mesh.block_mesh_dict(args.level)
     hdr = mesh_gen.header(argv)
     mesh_gen.write_wing_and_background(
         args.output, hdr, "Body-wing drone", m,
-        lambda j, r: refine_actions(r, m.binfo["margins"][j]))
+        lambda j, r: sphere_mesh.refine_actions(m.binfo["margins"][j]))
     write_case(os.path.join(args.output, "body"),
-              text_dict(stext.split("\n", 1)[1]),
+              sphere_mesh.TextDict(stext.split("\n", 1)[1]),
               FOAM_HEADER % ("dictionary", "blockMeshDict") + hdr)
 
     summary = dict(components=[dict(name="wing"),

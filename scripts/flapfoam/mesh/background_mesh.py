@@ -81,8 +81,10 @@ def background_block_mesh(lev, bg, env):
 
 
 def topo_set_refine(region, centre, extra=()):
-    """topoSetDict of a refinement pass: the region's cylinders, and the
-    extra actions (action, source, body) after them."""
+    """topoSetDict of a refinement pass: the region's cylinders (the
+    cylinder rA without the half-space y < yA, unless yA is None, and the
+    cylinder rB), and the extra actions (action, source, body) after
+    them."""
     c = centre
     big = 10.0
     acts = [
@@ -91,10 +93,12 @@ def topo_set_refine(region, centre, extra=()):
          "        radius %.9g;" % (c[0], c[1], c[2] - region["z"],
                                    c[0], c[1], c[2] + region["z"],
                                    region["rA"])),
-        ("subtract", "boxToCell",
-         "box (%.9g %.9g %.9g) (%.9g %.9g %.9g);"
-         % (-big, -big, -big, big, region["yA"], big)),
     ]
+    if region["yA"] is not None:        # None: the whole cylinder
+        acts.append(
+            ("subtract", "boxToCell",
+             "box (%.9g %.9g %.9g) (%.9g %.9g %.9g);"
+             % (-big, -big, -big, big, region["yA"], big)))
     if region["rB"] > 0:
         acts.append(
             ("add", "cylinderToCell",

@@ -88,11 +88,15 @@ def build(level, component, pose=(0.0, 0.0), tilts=(0.0,)):
     return LevelMeshes(lev, comp, wbm, winfo, bbm, binfo)
 
 
-def write_wing_and_background(out, hdr, drone, m, extra_actions=None):
-    """<out>/wing and <out>/background with the topoSetDict.refine<i> of
-    the background (plus extraActions(i, region) in each)."""
-    write_case(os.path.join(out, "wing"), m.wbm,
-              hdr + "// %s: wing component (O-type, overset)\n\n" % drone)
+def write_wing_and_background(out, hdr, drone, m, extra_actions=None,
+                              wings=("wing",)):
+    """<out>/<wing> for each name of wings (the same wing component) and
+    <out>/background with the topoSetDict.refine<i> of the background (plus
+    extraActions(i, region) in each)."""
+    for wing in wings:
+        write_case(os.path.join(out, wing), m.wbm,
+                   hdr + "// %s: wing component (O-type, overset)\n\n"
+                   % drone)
     extra = {"topoSetDict.refine%d" % (j + 1):
              topo_set_refine(r, BACKGROUND.centre,
                            extra_actions(j, r) if extra_actions else ())
