@@ -301,7 +301,9 @@ def force_coefficients(run, drone, curves, out):
                 % (values.min(), values.max()), transform=ax.transAxes,
                 fontsize=8, va="bottom")
     cycle_axes(ax, "C = F / (0.5 rho S U_ref^2)",
-               "Force coefficients (global frame; %s)" % run.model)
+               "Force coefficients (global frame; %s)" % run.model,
+               "t f [cycles]; each load drawn at the row before its own"
+               " (CFD: the flow it comes from, docs/flightData.md)")
     ax.legend(fontsize=8)
     save(fig, out, "forceCoefficients.png")
     if "wing" in curves:

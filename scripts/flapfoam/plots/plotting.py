@@ -10,6 +10,8 @@ run (flapfoam.plots.step_timers).
 
 import os
 
+import textwrap
+
 import numpy as np
 
 from flapfoam.plots import step_timers as plot_step_timers
@@ -27,24 +29,26 @@ def save(fig, out, name):
 
 def path(x, z, t, labels, **line):
     """The figure of an x-z path [mm] from its start (o) to its end (s);
-    labels: the x and z axes' and the title."""
+    labels: the x and z axes' and the title (wrapped to the figure's
+    width: a model's coefficients make it long)."""
     fig, ax = plt.subplots(figsize=(6, 5))
     ax.plot(1e3*x, 1e3*z, "-", **line)
     ax.plot(1e3*x[0], 1e3*z[0], "o", label="t = %.4g s" % t[0])
     ax.plot(1e3*x[-1], 1e3*z[-1], "s", label="t = %.4g s" % t[-1])
     ax.set_xlabel(labels[0])
     ax.set_ylabel(labels[1])
-    ax.set_title(labels[2])
+    ax.set_title(textwrap.fill(labels[2], 56), fontsize=10)
     ax.grid(True, alpha=0.3)
     ax.legend()
+    fig.tight_layout()
     return fig
 
 
-def cycle_axes(ax, ylabel, title):
+def cycle_axes(ax, ylabel, title, xlabel="t f [cycles]"):
     """The zero line, the labels against t f and the grid of a plot over
     the cycles."""
     ax.axhline(0, color="k", lw=0.5)
-    ax.set_xlabel("t f [cycles]")
+    ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     ax.set_title(title)
     ax.grid(True, alpha=0.3)
