@@ -9,12 +9,12 @@ made-up run known in closed form."""
 
 import math
 
-import h5py
 import numpy as np
 import pytest
 
 from flapfoam.studies import cfd_trim
 from flapfoam.studies.cfd_trim import Problem, Run, Settings
+from flight_files import write_run
 
 J_QS = np.array([[1.3, -0.1], [0.02, 0.55], [0.03, 3.1]])
 TRIM = np.array([1.30, -0.02])
@@ -103,12 +103,7 @@ def test_the_residuals_of_a_made_up_run(tmp_path):
             "bodies/wing/orientation": R}
     for name in ("bodies/body/force", "bodies/wing/force"):
         rows[name][0] = np.nan
-    folder = tmp_path / "postProcessing" / "flightData" / "0"
-    folder.mkdir(parents=True)
-    with h5py.File(folder / "flightData.h5", "w") as f:
-        for name, v in rows.items():
-            f[name] = v
-        f["joints/q"].attrs["columns"] = "q_0 q_1"
+    write_run(tmp_path, rows, {"joints/q": "q_0 q_1"})
     r = cfd_trim.residuals(str(tmp_path), Settings(dir=""))
     assert r == pytest.approx([0.05, 0.01, 0.3], abs=1e-9)
     assert cfd_trim.finished(str(tmp_path), Settings(dir=""))

@@ -7,12 +7,12 @@ steps; the cycles both hold, and more refused."""
 
 import math
 
-import h5py
 import numpy as np
 import pytest
 
 from flapfoam.errors import FlapFoamError
 from flapfoam.studies import mesh_compare
+from flight_files import write_run
 
 
 def made_up(case, scale, cycles):
@@ -27,17 +27,12 @@ def made_up(case, scale, cycles):
                                    0.02 + 0.01*wave])
     moment = scale*np.column_stack([0*t, 1e-5 + 1e-6*wave, 0*t])
     force[0] = moment[0] = np.nan
-    folder = case / "postProcessing" / "flightData" / "0"
-    folder.mkdir(parents=True)
-    with h5py.File(folder / "flightData.h5", "w") as f:
-        f["time"] = t
-        f["joints/q"] = q
-        f["joints/q"].attrs["columns"] = "q_0 q_1 q_2"
-        f["bodies/body/force"] = force/2
-        f["bodies/body/moment"] = moment/2
-        f["bodies/wing/force"] = force/2
-        f["bodies/wing/moment"] = moment/2
-    return str(case)
+    return write_run(case, {"time": t, "joints/q": q,
+                            "bodies/body/force": force/2,
+                            "bodies/body/moment": moment/2,
+                            "bodies/wing/force": force/2,
+                            "bodies/wing/moment": moment/2},
+                     {"joints/q": "q_0 q_1 q_2"})
 
 
 def test_the_cycle_differences_in_percent(tmp_path):

@@ -9,11 +9,11 @@ checked against the run's whole cycles."""
 import json
 import math
 
-import h5py
 import numpy as np
 import pytest
 
 from flapfoam.studies import power
+from flight_files import write_run
 from flapfoam.studies.qs_case import StudyError
 
 DICT = """eABAMeshMotionCoeffs
@@ -60,14 +60,8 @@ def made_up_run(case, cycles=6):
             "bodies/wing/velocity": np.tile([0, 0, CLIMB], (n, 1)),
             "bodies/wing/angularVelocity": np.tile([0, 0, 2.0], (n, 1)),
             "bodies/wing/orientation": np.tile(np.eye(3).reshape(9), (n, 1))}
-    folder = case / "postProcessing" / "flightData" / "0"
-    folder.mkdir(parents=True)
-    with h5py.File(folder / "flightData.h5", "w") as f:
-        for name, v in rows.items():
-            f[name] = v
-        f["joints/q"].attrs["columns"] = "q_0 q_1"
-        f["joints/power"].attrs["columns"] = "power_1"
-        f["joints/tau"].attrs["columns"] = "tau_1"
+    write_run(case, rows, {"joints/q": "q_0 q_1", "joints/power": "power_1",
+                           "joints/tau": "tau_1"})
     return case
 
 
