@@ -4,11 +4,11 @@
 """
 The body component of the drones with a sphere (cases/bodyWingDrone,
 cases/twoWingDrone): a spherical shell around the sphere of radius one
-chord (cellZone "body").  A case's scripts/sphereMesh.py (or another
-script) calls main() with the case's turn of the panels:
+chord (cellZone "body"): the body-wing drone's (SHELL) with its
+scripts/sphereMesh.py (main), another case's Shell through the functions:
 
     sphereMesh.py <level> [-o FILE]         the blockMeshDict
-    sphereMesh.py -map POINTS [-centre X Y Z] [-turn AX AY AZ ANGLE]
+    sphereMesh.py -map POINTS [-centre X Y Z]
                                             map blockMesh's points onto
                                             the spheres (ascii points file)
     sphereMesh.py -list
@@ -79,18 +79,19 @@ def expansion(L, n, d0):
     return g**(n - 1)
 
 
-def block_mesh_dict(level):
+def block_mesh_dict(level, margin=MARGIN):
     """The blockMeshDict of the shell between the cubes of half side 1 and
     2 (straight edges: every radial block edge and grid line lies on a ray
     from the origin), graded along the rays, and the level's parameters;
-    mapPoints() then puts it onto the spheres."""
+    map_points() then puts it onto the spheres (outer radius R1 + margin,
+    the shell's Shell.margin)."""
     lev = LEVELS[level]
     n, n_r, ds_w = lev.n, lev.n_r, lev.ds_w
-    R2 = R1 + MARGIN
+    R2 = R1 + margin
     # radial grading from the wall: the block's third direction runs from
     # the outer to the inner cube, so its ratio last/first is the inverse
     # of the growth outwards
-    ratio = 1.0/expansion(MARGIN, n_r, ds_w)
+    ratio = 1.0/expansion(margin, n_r, ds_w)
 
     def corners(r):
         return [(sx*r, sy*r, sz*r) for (sx, sy, sz) in
@@ -142,10 +143,22 @@ def block_mesh_dict(level):
 # an exact tie that the stock and the octree donor searches break
 # differently (4 of 2514 acceptors at the first step, the body force then
 # 2.4 % apart).  A sphere is a sphere: the turn only moves the seams.  A
-# case may give another (-turn): the two-wing drone's turns about y only,
+# case may give another (Shell): the two-wing drone's turns about y only,
 # so that the mesh stays its own mirror image about y = 0.
 TURN_AXIS = (1.0, 2.0, 3.0)
 TURN_ANGLE = 0.3            # [rad]
+
+
+@dataclass(frozen=True)
+class Shell:
+    """The shell as mapped: its outer margin (R2 = R1 + margin) and the
+    turn of its panels (axis, angle [rad])."""
+    margin: float = MARGIN
+    axis: tuple = TURN_AXIS
+    angle: float = TURN_ANGLE
+
+
+SHELL = Shell()             # the body-wing drone's
 
 
 def turn(v, axis=TURN_AXIS, angle=TURN_ANGLE):
@@ -158,30 +171,31 @@ def turn(v, axis=TURN_AXIS, angle=TURN_ANGLE):
     return tuple(v[i]*c + kxv[i]*s + k[i]*kv*(1 - c) for i in range(3))
 
 
-def map_points(path, centre=(0.0, 0.0, 0.0), axis=TURN_AXIS,
-               angle=TURN_ANGLE):
+def map_points(path, centre=(0.0, 0.0, 0.0), shell=SHELL):
     """Map the points of the cube shell (an ascii polyMesh points file) onto
     the spherical shell: a point p with rho = max |p_i| in [1, 2] goes to
-    the radius R1 + (rho - 1)(R2 - R1) along its ray, turned by angle about
-    axis (see TURN_AXIS), then to centre.  Returns the number of points."""
-    R2 = R1 + MARGIN
+    the radius R1 + (rho - 1)(R2 - R1) along its ray (R2 = R1 +
+    shell.margin), turned by shell.angle about shell.axis (see TURN_AXIS),
+    then to centre.  Returns the number of points."""
+    R2 = R1 + shell.margin
 
     def mapped(p):
         x, y, z = p
         rho = max(abs(x), abs(y), abs(z))
         r = R1 + (rho - 1.0)*(R2 - R1)
         norm = math.sqrt(x*x + y*y + z*z)
-        d = turn((x/norm, y/norm, z/norm), axis, angle)
+        d = turn((x/norm, y/norm, z/norm), shell.axis, shell.angle)
         return (centre[0] + r*d[0], centre[1] + r*d[1], centre[2] + r*d[2])
     return rewrite_points(path, mapped)
 
 
-def refine_actions(margin, centre=(0.0, 0.0, 0.0)):
-    """The topoSet actions that add the body component's ball, grown by a
-    refinement pass's margin, to a refinement region."""
+def refine_actions(margin, centre=(0.0, 0.0, 0.0), shell=SHELL):
+    """The topoSet actions that add the body component's ball (radius R1 +
+    shell.margin), grown by a refinement pass's margin, to a refinement
+    region."""
     return [("add", "sphereToCell",
              "origin (%.9g %.9g %.9g);\n        radius %.9g;"
-             % (tuple(centre) + (R1 + MARGIN + margin,)))]
+             % (tuple(centre) + (R1 + shell.margin + margin,)))]
 
 
 class TextDict:
@@ -204,15 +218,10 @@ def main(argv=None):
     ap.add_argument("-map", metavar="POINTS",
                     help="map the cube-shell points file (ascii) onto the "
                          "spheres instead")
-    ap.add_argument("-turn", nargs=4, type=float, metavar=("AX", "AY", "AZ",
-                                                           "ANGLE"),
-                    default=list(TURN_AXIS) + [TURN_ANGLE],
-                    help="the panels' turn: axis and angle [rad] (default "
-                         "%s, %g)" % (TURN_AXIS, TURN_ANGLE))
     ap.add_argument("-list", action="store_true")
     a = ap.parse_args(argv)
     if a.map:
-        n = map_points(a.map, tuple(a.centre), tuple(a.turn[:3]), a.turn[3])
+        n = map_points(a.map, tuple(a.centre))
         print("sphereMesh: mapped %d points of %s" % (n, a.map),
               file=sys.stderr)
         return 0
