@@ -21,9 +21,9 @@ order: the left wing's overset patch is the master):
                                          flapfoam.mesh.poly_mesh.mirror)
   <out>/body/system/blockMeshDict        the body-wing drone's sphere
                                          (flapfoam.mesh.sphere_mesh), its
-                                         shell 25 mm deep, its panels turned
-                                         about y only so that it stays its
-                                         own mirror image (placeMesh.py body)
+                                         panels turned about y only so that
+                                         it stays its own mirror image
+                                         (placeMesh.py body)
   <out>/background/system/blockMeshDict  background cube of 20 chords
   <out>/background/system/topoSetDict.refine<i>  refinement regions: the
                                          cylinder about z that holds what
@@ -72,13 +72,10 @@ THETA_MAX = math.radians(20)
 # sphere at 80 deg of flapping (the roll variant's), so that the body's
 # walls need not cut it (system/fvSchemes noHoleCut)
 COMPONENT = dataclasses.replace(wing_mesh.COMPONENT, root_margin=10e-3)
-# The body component: the body-wing drone's sphere, its shell reaching
-# 25 mm past the sphere (to 40 mm from the centre, so that, as in the
-# body-wing drone, it overlaps the wing components at the wing roots, 37.5
-# mm out), its panels turned about y only so that it stays its own mirror
-# image (placeMesh.py body)
-SHELL = sphere_mesh.Shell(margin=25e-3, axis=(0.0, 1.0, 0.0),
-                          angle=sphere_mesh.TURN_ANGLE)
+# The body component: the body-wing drone's sphere and shell (12 mm deep),
+# its panels turned about y only so that it stays its own mirror image
+# (placeMesh.py body)
+SHELL = sphere_mesh.Shell(axis=(0.0, 1.0, 0.0))
 WINGS = ("leftWing", "rightWing")
 
 
