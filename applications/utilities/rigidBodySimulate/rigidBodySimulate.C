@@ -92,6 +92,7 @@ Usage
 #include "multibodyDict.H"
 #include "runInputCheck.H"
 #include "bodyLoad.H"
+#include "aerodynamics.H"
 #include "motionRecord.H"
 #include "stepTimers.H"
 #include "polyMesh.H"
@@ -188,6 +189,10 @@ struct appliedLoads
         dict.set("bodyLoad", type);
         dict.set("fluidLoad", true);
         load = bodyLoad::New(runTime, model, dict, "vacuum");
+        if (type != bodyLoads::aerodynamics::typeName)
+        {
+            bodyLoads::aerodynamics::checkEntries(runTime, model, modelDict);
+        }
         const bool staggered = args.found("staggeredLoads");
         eachEstimate = load->stateDependent() && !staggered;
         Info<< "Loads: " << type

@@ -77,6 +77,20 @@ const Foam::wordList& Foam::bodyLoads::aerodynamics::keys()
 }
 
 
+void Foam::bodyLoads::aerodynamics::checkEntries
+(
+    const objectRegistry& db,
+    const RBD::rigidBodyModel& model,
+    const dictionary& dict
+)
+{
+    if (dict.found("aerodynamics", keyType::LITERAL))
+    {
+        const aerodynamics wings(db, model, dict);
+    }
+}
+
+
 void Foam::bodyLoads::aerodynamics::loads
 (
     const RBD::rigidBodyModelState& state,

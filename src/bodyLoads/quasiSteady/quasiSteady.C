@@ -64,13 +64,15 @@ const Foam::wordList& Foam::wingAerodynamicsModels::quasiSteady::keys()
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::wingAerodynamicsModels::quasiSteady::checkKeys
+const Foam::dictionary& Foam::wingAerodynamicsModels::quasiSteady::checked
 (
     const dictionary& dict
 )
 {
-    dictionaryKeys(keys()).named("quasiSteady wing " + dict.dictName())
+    dictionaryKeys(keys())
+        .named(dictionaryKeys::pathOf(dict) + " (type quasiSteady)")
         .check(dict);
+    return dict;
 }
 
 
@@ -197,7 +199,7 @@ Foam::wingAerodynamicsModels::quasiSteady::quasiSteady
     const dictionary& dict
 )
 :
-    wingAerodynamics(name, model, dict),
+    wingAerodynamics(name, model, checked(dict)),
     span_(readUnit(dict, "span")),
     chord_(readUnit(dict, "chord")),
     rho_(readAllowed(dict, "rho", allowed::above(0.0))),
@@ -208,7 +210,6 @@ Foam::wingAerodynamicsModels::quasiSteady::quasiSteady
     CoP1_(dict.getOrDefault<scalar>("CoP1", 0)),
     wind_(dict.getOrDefault<vector>("wind", Zero))
 {
-    checkKeys(dict);
     if (mag(span_ & chord_) > 1e-6)
     {
         FatalIOErrorInFunction(dict)

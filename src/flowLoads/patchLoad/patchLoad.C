@@ -28,6 +28,7 @@ License
 #include "turbulenceModel.H"
 #include "incompressibleTurbulenceModel.H"
 #include "transportModel.H"
+#include "patchLoadKeys.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -187,8 +188,7 @@ Foam::bodyLoads::patchLoad::patchLoad
 
 const Foam::wordList& Foam::bodyLoads::patchLoad::keys()
 {
-    static const wordList k({"rho", "rhoInf", "p", "U"});
-    return k;
+    return patchLoadKeys::coeffs();
 }
 
 

@@ -32,21 +32,29 @@ namespace Foam
 }
 
 
-// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::imposedMotion::checkKeys() const
+void Foam::imposedMotion::checkKeys
+(
+    const word& name,
+    const word& type,
+    const typeKeys& keys,
+    const dictionary& dict
+)
 {
-    const wordList ignored(ignoredKeys());
+    wordList allowed(keys.own);
+    allowed.append(word("type"));
+    allowed.append(keys.jointsKey);
 
-    dictionaryKeys(keys())
-        .named("'" + name_ + "' (type " + type() + ")")
-        .alsoAllowing(ignored, "the paper authors' keys, ignored")
-        .check(dict_);
+    dictionaryKeys(allowed)
+        .named(dictionaryKeys::pathOf(dict) + " (type " + type + ")")
+        .alsoAllowing(keys.ignored, "the paper authors' keys, ignored")
+        .check(dict);
 
     wordList ignoredFound;
-    for (const entry& e : dict_)
+    for (const entry& e : dict)
     {
-        if (ignored.found(e.keyword()))
+        if (keys.ignored.found(e.keyword()))
         {
             ignoredFound.append(e.keyword());
         }
@@ -54,12 +62,24 @@ void Foam::imposedMotion::checkKeys() const
 
     if (ignoredFound.size())
     {
-        IOWarningInFunction(dict_)
+        IOWarningInFunction(dict)
             << "Entries " << dictionaryKeys::joined(ignoredFound).c_str()
-            << " of '" << name_ << "' (type " << type() << ") are keys of"
+            << " of '" << name << "' (type " << type << ") are keys of"
             << " the paper authors' code that flapFoam does not use: ignored"
             << endl;
     }
+}
+
+
+// * * * * * * * * * * * * * * * * Key Registry  * * * * * * * * * * * * * * //
+
+Foam::imposedMotion::addTypeKeys::addTypeKeys
+(
+    const word& type,
+    const typeKeys& keys
+)
+{
+    typeKeysTable().set(type, keys);
 }
 
 
@@ -91,6 +111,27 @@ Foam::imposedMotion::imposedMotion
 
 
 // * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * * //
+
+Foam::HashTable<Foam::imposedMotion::typeKeys>&
+Foam::imposedMotion::typeKeysTable()
+{
+    static HashTable<typeKeys> table;
+    return table;
+}
+
+
+const Foam::imposedMotion::typeKeys& Foam::imposedMotion::keysOfType() const
+{
+    const auto iter = typeKeysTable().cfind(type());
+    if (!iter.found())
+    {
+        FatalErrorInFunction
+            << "imposedMotion type " << type() << " registered no keys"
+            << " (imposedMotion::addTypeKeys in its .C)" << exit(FatalError);
+    }
+    return iter.val();
+}
+
 
 Foam::wordList Foam::imposedMotion::keys() const
 {

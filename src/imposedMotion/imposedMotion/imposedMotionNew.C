@@ -45,10 +45,14 @@ Foam::autoPtr<Foam::imposedMotion> Foam::imposedMotion::New
         ) << exit(FatalIOError);
     }
 
-    autoPtr<imposedMotion> motionPtr(cstrIter()(name, dict));
-    motionPtr->checkKeys();
+    // The keys first: the type's constructor stops at a missing key
+    const auto keysIter = typeKeysTable().cfind(motionType);
+    if (keysIter.found())
+    {
+        checkKeys(name, motionType, keysIter.val(), dict);
+    }
 
-    return motionPtr;
+    return autoPtr<imposedMotion>(cstrIter()(name, dict));
 }
 
 

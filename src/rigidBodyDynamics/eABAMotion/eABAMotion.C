@@ -27,7 +27,6 @@ License
 #include "Time.H"
 #include "StringStream.H"
 #include "flightController.H"
-#include "dictionaryKeys.H"
 #include "dictionaryRead.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -272,16 +271,6 @@ const Foam::wordList& Foam::RBD::eABAMotion::keys()
     });
 
     return modelKeys;
-}
-
-
-void Foam::RBD::eABAMotion::checkKeys
-(
-    const dictionary& dict,
-    const wordList& allowed
-)
-{
-    checkDictionaryKeys(dict, allowed);
 }
 
 

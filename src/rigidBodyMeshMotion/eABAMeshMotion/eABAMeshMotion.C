@@ -22,8 +22,7 @@ License
 
 #include "eABAMeshMotion.H"
 #include "bodyLoad.H"
-#include "patchLoad.H"
-#include "aerodynamics.H"
+#include "eABAMeshMotionKeys.H"
 #include "addToRunTimeSelectionTable.H"
 #include "polyMesh.H"
 #include "stepTimers.H"
@@ -143,7 +142,6 @@ void Foam::eABAMeshMotion::readBackground()
     }
 
     const dictionary& dict = coeffDict().subDict("background");
-    RBD::eABAMotion::checkKeys(dict, backgroundKeys());
 
     // The model's bodyID() of an unknown name is a FatalError of its table:
     // the name is checked here first, with the file and the key
@@ -194,31 +192,25 @@ Foam::wordList Foam::eABAMeshMotion::keys(const bool topLevel)
     // patchLoad, aerodynamics) and of the motion solver; at the top level
     // of dynamicMeshDict also those of the dynamic mesh
     wordList k(RBD::eABAMotion::keys());
-    k.append(bodyLoad::keys());
-    k.append(bodyLoads::patchLoad::keys());
-    k.append(bodyLoads::aerodynamics::keys());
-    k.append(word("background"));
-
-    if (topLevel)
-    {
-        k.append
-        (
-            wordList
-            ({
-                "dynamicFvMesh", "dynamicFvMeshLibs", "motionSolverLibs",
-                "motionSolver", "timeWait"
-            })
-        );
-    }
-
+    k.append(eABAMeshMotionKeys::coeffs(topLevel));
     return k;
+}
+
+
+const Foam::dictionary& Foam::eABAMeshMotion::checked
+(
+    const dictionary& dict,
+    const dictionary& coeffs
+)
+{
+    eABAMeshMotionKeys::check(dict, coeffs);
+    return coeffs;
 }
 
 
 const Foam::wordList& Foam::eABAMeshMotion::backgroundKeys()
 {
-    static const wordList k({"cellZone", "body", "components"});
-    return k;
+    return eABAMeshMotionKeys::background();
 }
 
 
@@ -286,7 +278,7 @@ Foam::eABAMeshMotion::eABAMeshMotion
     model_
     (
         mesh.time(),
-        coeffDict(),
+        checked(dict, coeffDict()),
         RBD::eABAMotion::initialState(mesh, coeffDict())
     ),
     backgroundBodyID_(-1),
@@ -296,13 +288,13 @@ Foam::eABAMeshMotion::eABAMeshMotion
     tau_(model_.nDoF(), Zero),
     fx_(model_.nBodies(), Zero)
 {
-    RBD::eABAMotion::checkKeys
-    (
-        coeffDict(), keys(!found(typeName + "Coeffs"))
-    );
     readBodies();
     readBackground();
     load_ = bodyLoad::New(mesh, model_, coeffDict(), "patchLoad");
+    if (!isA<bodyLoads::aerodynamics>(load_()))
+    {
+        bodyLoads::aerodynamics::checkEntries(mesh, model_, coeffDict());
+    }
 
     // The model, its bodies and their loads for the output.  The model
     // made a fresh start consistent (eABAMotion: the flow's load at the

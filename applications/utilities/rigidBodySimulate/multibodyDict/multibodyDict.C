@@ -22,7 +22,7 @@ License
 
 #include "multibodyDict.H"
 #include "eABAMotion.H"
-#include "aerodynamics.H"
+#include "eABAMeshMotionKeys.H"
 #include "StringStream.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -181,11 +181,6 @@ void Foam::multibodyDict::checkKeys() const
 {
     const dictionary& model = dict();
 
-    // The model's keys and those of the loads it can take without a mesh
-    wordList modelKeys(RBD::eABAMotion::keys());
-    modelKeys.append(bodyLoad::keys());
-    modelKeys.append(bodyLoads::aerodynamics::keys());
-
     // The dictionary of the mesh motion solver that holds the model, if any
     const bool inCoeffs = location_.ends_with(coeffsName);
     const dictionary& owner = inCoeffs ? model.parent() : model;
@@ -196,27 +191,32 @@ void Foam::multibodyDict::checkKeys() const
 
     if (motionSolver.empty() && !inCoeffs)
     {
-        // rigidBodySimulate's own dictionary: every key must be the model's
-        RBD::eABAMotion::checkKeys(model, modelKeys);
+        // rigidBodySimulate's own dictionary: the model's keys and those
+        // of the loads it can take without a mesh
+        wordList loadKeys(bodyLoad::keys());
+        loadKeys.append(bodyLoads::aerodynamics::keys());
+        RBD::multibodyKeys(loadKeys, wordList(), "those of the loads")
+            .check(model);
         return;
-    }
-
-    wordList unused;
-    for (const entry& e : model)
-    {
-        if (!modelKeys.found(e.keyword()))
-        {
-            unused.append(e.keyword());
-        }
     }
 
     if (motionSolver == "eABAMeshMotion" || motionSolver.empty())
     {
-        Info<< "Keys of the mesh motion not used by rigidBodySimulate:"
-            << listed(unused).c_str() << nl;
+        // The mesh motion's own check: what the CFD refuses is refused
+        // here (the keys only the mesh reads are allowed, not used)
+        eABAMeshMotionKeys::check(owner, model);
     }
     else
     {
+        wordList unused;
+        for (const entry& e : model)
+        {
+            if (!RBD::eABAMotion::keys().found(e.keyword()))
+            {
+                unused.append(e.keyword());
+            }
+        }
+
         IOWarningInFunction(owner)
             << "motionSolver " << motionSolver << " in "
             << location_.c_str()

@@ -33,6 +33,17 @@ namespace imposedMotions
 {
     defineTypeNameAndDebug(fourier, 0);
     addToRunTimeSelectionTable(imposedMotion, fourier, dictionary);
+
+    // The keys of the Usage table besides type
+    static const imposedMotion::addTypeKeys addfourierKeys_
+    (
+        imposedMotions::fourier::typeName,
+        {
+            "joint",
+            wordList({"frequency", "a0", "a", "b"}),
+            wordList()
+        }
+    );
 }
 }
 

@@ -33,6 +33,17 @@ namespace imposedMotions
 {
     defineTypeNameAndDebug(harmonic, 0);
     addToRunTimeSelectionTable(imposedMotion, harmonic, dictionary);
+
+    // The keys of the Usage table besides type
+    static const imposedMotion::addTypeKeys addharmonicKeys_
+    (
+        imposedMotions::harmonic::typeName,
+        {
+            "joint",
+            wordList({"amplitude", "frequency", "phase", "offset"}),
+            wordList()
+        }
+    );
 }
 }
 

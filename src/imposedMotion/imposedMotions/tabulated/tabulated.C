@@ -37,6 +37,17 @@ namespace imposedMotions
 {
     defineTypeNameAndDebug(tabulated, 0);
     addToRunTimeSelectionTable(imposedMotion, tabulated, dictionary);
+
+    // The keys of the Usage table besides type
+    static const imposedMotion::addTypeKeys addtabulatedKeys_
+    (
+        imposedMotions::tabulated::typeName,
+        {
+            "joint",
+            wordList({"values", "file", "offset"}),
+            wordList()
+        }
+    );
 }
 }
 

@@ -32,6 +32,20 @@ namespace imposedMotions
 {
     defineTypeNameAndDebug(wang, 0);
     addToRunTimeSelectionTable(imposedMotion, wang, dictionary);
+
+    // The keys of the Usage table besides type
+    static const imposedMotion::addTypeKeys addwangKeys_
+    (
+        imposedMotions::wang::typeName,
+        {
+            "joint",
+            wordList
+            ({
+                "waveform", "amplitude", "frequency", "K", "phase", "offset"
+            }),
+            wordList()
+        }
+    );
 }
 }
 

@@ -33,6 +33,21 @@ namespace imposedMotions
 {
     defineTypeNameAndDebug(wangParametrization, 0);
     addToRunTimeSelectionTable(imposedMotion, wangParametrization, dictionary);
+
+    // The keys of the Usage table besides type
+    static const imposedMotion::addTypeKeys addwangParametrizationKeys_
+    (
+        imposedMotions::wangParametrization::typeName,
+        {
+            "jointList",
+            wordList
+            ({
+                "motionType", "Aphi", "fphi", "Kphi", "Aalpha", "falpha",
+                "Kalpha"
+            }),
+            wordList({"body", "initialConditions"})
+        }
+    );
 }
 }
 
