@@ -9,12 +9,12 @@ postProcessing/flightData/*/flightData.h5): the largest |y|, |yaw|, |roll|
 its end, and the mean roll and yaw rates of each whole flapping cycle (the
 difference of the angle over the cycle, deg per cycle).
 
-    lateral.py [-case DIR] [-f HZ] [-zero] [-rollRate SIGN]
+    lateral.py [-case DIR] [-f HZ] [-zero] [-rollRate SIGN] [-quiet]
 
 -zero: "PASS" if every lateral state and rate is exactly 0 in every row,
 else "FAIL"; -rollRate +1 (-1): "PASS" if the last whole cycle's mean roll
-rate is positive (negative) and at least 0.1 deg per cycle.  Exit status 1
-if a check fails.  numpy, h5py.
+rate is positive (negative) and at least 0.1 deg per cycle; -quiet: only
+those lines.  Exit status 1 if a check fails.  numpy, h5py.
 """
 
 import argparse
@@ -43,7 +43,10 @@ def main(argv=None):
                     help="flapping frequency [Hz] (default 20)")
     ap.add_argument("-zero", action="store_true")
     ap.add_argument("-rollRate", type=int, choices=[-1, 1])
+    ap.add_argument("-quiet", action="store_true",
+                    help="only the PASS/FAIL lines of -zero, -rollRate")
     a = ap.parse_args(argv)
+    say = (lambda *args: None) if a.quiet else print
     _, data = flight_data.load(a.case)
     t = np.asarray(data["time"], dtype=float)
     q = np.asarray(data["joints/q"], dtype=float)
@@ -54,15 +57,15 @@ def main(argv=None):
     for name, i in LATERAL.items():
         scale = 1.0 if name == "y" else 180/math.pi
         unit = "m" if name == "y" else "deg"
-        print("lateral: max |%s| %.6g %s, max |rate| %.6g %s/s"
+        say("lateral: max |%s| %.6g %s, max |rate| %.6g %s/s"
               % (name, scale*np.abs(q[:, i]).max(), unit,
                  scale*np.abs(qd[:, i]).max(), unit))
-    print("lateral: at t = %.6g s: x y z %.6g %.6g %.6g m, yaw pitch roll "
+    say("lateral: at t = %.6g s: x y z %.6g %.6g %.6g m, yaw pitch roll "
           "%.6g %.6g %.6g deg" % ((t[-1],) + tuple(q[-1, :3])
                                   + tuple(np.degrees(q[-1, 3:6]))))
     rates = {n: cycle_rates(t, q[:, LATERAL[n]], a.f) for n in ("roll", "yaw")}
     for (k, roll), (_, yaw) in zip(rates["roll"], rates["yaw"]):
-        print("lateral: cycle %d: mean roll rate %.6g deg/cycle, yaw rate "
+        say("lateral: cycle %d: mean roll rate %.6g deg/cycle, yaw rate "
               "%.6g deg/cycle" % (k, roll, yaw))
     status = 0
     if a.zero:

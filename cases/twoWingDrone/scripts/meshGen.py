@@ -67,15 +67,16 @@ HINGE = 15e-3
 # Body pitch the refined region allows for (the stroke plane tilts with it)
 THETA_MAX = math.radians(20)
 # The body-wing drone's wing component, its root side 10 mm from the root
-# (with the body-wing drone's 7 mm the assembly failed at t = 2.5 ms, the
-# holes running through the background); at 10 mm it stays 0.1 mm off the
-# sphere at 80 deg of flapping (the roll variant's), so that the body's
-# walls need not cut it (system/fvSchemes noHoleCut)
+# (at 7 mm the holes ran through both wing components at t = 5 ms), 0.1 mm
+# off the sphere at 80 deg of flapping (the roll variant's), so that the
+# body's walls need not cut it (system/fvSchemes noHoleCut)
 COMPONENT = dataclasses.replace(wing_mesh.COMPONENT, root_margin=10e-3)
-# The body component: the body-wing drone's sphere and shell (12 mm deep),
-# its panels turned about y only so that it stays its own mirror image
-# (placeMesh.py body)
-SHELL = sphere_mesh.Shell(axis=(0.0, 1.0, 0.0))
+# The body component: the body-wing drone's sphere, its shell 25 mm deep (to
+# 40 mm from the centre, over the wing roots, 37.5 mm out, as the body-wing
+# drone's shell is over its wing's root: with its 12 mm the holes ran
+# through both wing components at t = 8.5 ms), its panels turned about y
+# only so that it stays its own mirror image (placeMesh.py body)
+SHELL = sphere_mesh.Shell(margin=25e-3, axis=(0.0, 1.0, 0.0))
 WINGS = ("leftWing", "rightWing")
 
 
