@@ -29,7 +29,7 @@ import numpy as np
 from flapfoam.checks.mesh_checks import cell_centres_approx
 from flapfoam.io import foam_mesh
 
-ZONES = {0: "background", 1: "leftWing", 2: "body", 3: "rightWing"}
+ZONES = {0: "body", 1: "leftWing", 2: "background", 3: "rightWing"}
 PARTNER = {0: 0, 1: 3, 2: 2, 3: 1}
 
 
