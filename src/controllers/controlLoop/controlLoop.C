@@ -54,7 +54,7 @@ Foam::controlLoop::controlLoop
     const dictionary& dict
 )
 :
-    name_(dict.dictName()),
+    name_(dictionaryKeys(keys()).checked(dict).dictName()),
     entry_(dict.get<word>("entry")),
     parameter_(dict.get<word>("parameter")),
     saturation_(readChoice(dict, "saturation", saturationNames)),
@@ -66,8 +66,6 @@ Foam::controlLoop::controlLoop
     output_(0),
     clipped_(false)
 {
-    checkDictionaryKeys(dict, keys());
-
     const imposedMotion& motion = motions.current(dict, "entry");
     const wordList allowed(motion.controlKeys());
     if (!allowed.found(parameter_))

@@ -126,7 +126,7 @@ Foam::controlTerm::controlTerm
     const dictionary& dict
 )
 :
-    name_(dict.dictName()),
+    name_(dictionaryKeys(keys()).checked(dict).dictName()),
     model_(model),
     body_(dict.get<word>("body")),
     bodyID_(treeBodyID(model, body_, dict)),
@@ -146,8 +146,6 @@ Foam::controlTerm::controlTerm
     integral_(0),
     previous_(0)
 {
-    checkDictionaryKeys(dict, keys());
-
     const bool hasRate =
         quantity_ == quantityType::position
      || quantity_ == quantityType::orientation;
