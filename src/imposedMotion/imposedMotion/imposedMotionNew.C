@@ -49,6 +49,10 @@ Foam::autoPtr<Foam::imposedMotion> Foam::imposedMotion::New
     const auto keysIter = typeKeysTable().cfind(motionType);
     if (keysIter.found())
     {
+        if (keysIter.val().checkFirst)
+        {
+            keysIter.val().checkFirst(dict);
+        }
         checkKeys(name, motionType, keysIter.val(), dict);
     }
 

@@ -41,7 +41,8 @@ namespace imposedMotions
         {
             "joint",
             wordList({"frequency", "a0", "a", "b"}),
-            wordList()
+            wordList(),
+            nullptr         // nothing to check first
         }
     );
 }

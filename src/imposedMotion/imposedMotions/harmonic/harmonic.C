@@ -41,7 +41,8 @@ namespace imposedMotions
         {
             "joint",
             wordList({"amplitude", "frequency", "phase", "offset"}),
-            wordList()
+            wordList(),
+            nullptr         // nothing to check first
         }
     );
 }

@@ -45,7 +45,8 @@ namespace imposedMotions
         {
             "joint",
             wordList({"values", "file", "offset"}),
-            wordList()
+            wordList(),
+            nullptr         // nothing to check first
         }
     );
 }

@@ -43,7 +43,8 @@ namespace imposedMotions
             ({
                 "waveform", "amplitude", "frequency", "K", "phase", "offset"
             }),
-            wordList()
+            wordList(),
+            nullptr         // nothing to check first
         }
     );
 }

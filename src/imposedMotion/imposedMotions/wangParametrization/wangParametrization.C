@@ -45,7 +45,11 @@ namespace imposedMotions
                 "motionType", "Aphi", "fphi", "Kphi", "Aalpha", "falpha",
                 "Kalpha"
             }),
-            wordList({"body", "initialConditions"})
+            wordList({"body", "initialConditions"}),
+            [](const dictionary& dict)
+            {
+                wangParametrization::readMotionType(dict);
+            }
         }
     );
 }
