@@ -161,8 +161,9 @@ def power(run, window, flapping="flapping", radius=None):
                                                 - s.time[ends[0]])
     inside = (s.time >= t0) & (s.time <= t1)
     phi = np.ptp(s.q[inside, drone.joint])
-    area = sum(phi*R**2/2 for R, _ in drone.wings(radius))
-    rho = drone.wings(radius)[0][1]
+    wings = drone.wings(radius)
+    area = sum(phi*R**2/2 for R, _ in wings)
+    rho = wings[0][1]
     ideal = math.sqrt(weight**3/(2*rho*area))
     aero = sum(joints) - change
     return {"run": run, "cycles": [window.first, window.first + n],
