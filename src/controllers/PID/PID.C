@@ -45,11 +45,9 @@ Foam::flightControllers::PID::PID
     imposedMotionList& motions
 )
 :
-    flightController(dict, model, motions),
+    flightController(dict, model, motions, wordList({"loops"})),
     loops_()
 {
-    checkKeys(dict);
-
     const dictionary& loopsDict = dict.subDict("loops");
     wordList outputs;
     for (const entry& e : loopsDict)

@@ -53,16 +53,34 @@ const Foam::wordList& Foam::flightController::keys()
 }
 
 
+Foam::wordList Foam::flightController::allKeys(const wordList& typeKeys)
+{
+    wordList k(keys());
+    k.append(typeKeys);
+    return k;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::flightController::flightController
 (
     const dictionary& dict,
     const RBD::rigidBodyModel& model,
-    imposedMotionList& motions
+    imposedMotionList& motions,
+    const wordList& typeKeys
 )
 :
-    update_(readChoice(dict, "update", updateNames)),
+    allowedKeys_(allKeys(typeKeys)),
+    update_
+    (
+        readChoice
+        (
+            dictionaryKeys(allowedKeys_).checked(dict),
+            "update",
+            updateNames
+        )
+    ),
     cycleOf_(),
     rate_(0),
     blend_(readAllowed(dict, "blend", 0.25, allowed::closed(0.0, 1.0))),
@@ -94,20 +112,6 @@ Foam::flightController::flightController
 
 
 // * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * * //
-
-Foam::wordList Foam::flightController::allowedKeys() const
-{
-    wordList allowed(keys());
-    allowed.append(typeKeys());
-    return allowed;
-}
-
-
-void Foam::flightController::checkKeys(const dictionary& dict) const
-{
-    checkDictionaryKeys(dict, allowedKeys());
-}
-
 
 Foam::scalar Foam::flightController::period() const
 {
