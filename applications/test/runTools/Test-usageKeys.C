@@ -20,12 +20,13 @@ License
     along with flapFoam (COPYING).  If not, see <http://www.gnu.org/licenses/>.
 
 Description
-    flapFoamTest-runTools: the Usage table of runProgress.H against
-    runProgress::keys(), the function object's own keys (usageKeys.H).
+    flapFoamTest-runTools: the Usage tables of runProgress.H and stepPace.H
+    against their keys(), the function objects' own keys (usageKeys.H).
 
 \*---------------------------------------------------------------------------*/
 
 #include "runProgress.H"
+#include "stepPace.H"
 #include "usageKeys.H"
 
 using namespace Foam;
@@ -38,6 +39,16 @@ TEST(usageKeys, runProgress)
     (
         usageKeys({"runTools/runProgress/runProgress.H"}),
         functionObjects::runProgress::keys()
+    );
+}
+
+
+TEST(usageKeys, stepPace)
+{
+    expectUsageKeys
+    (
+        usageKeys({"runTools/stepPace/stepPace.H"}),
+        functionObjects::stepPace::keys()
     );
 }
 
