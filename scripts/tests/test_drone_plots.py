@@ -1,7 +1,7 @@
 # License
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
-"""flapfoam.plots.drone, the plots of both drones: what they compute (the
+"""flapfoam.plots.drone, the plots of the three drones: what they compute (the
 reference values, the wing's coefficients at the load times, the cycle
 means, the prescribed joints' error, the downstroke) and the figures of
 each drone, on runs made here with the cases' dictionaries."""
@@ -21,7 +21,8 @@ from flapfoam.plots import drone
 
 F = 20.0                    # the drones' flapping frequency [Hz]
 CASES = {"singleWing": ("singleWingDrone", 4, ("wing",)),
-         "bodyWing": ("bodyWingDrone", 5, ("body", "wing"))}
+         "bodyWing": ("bodyWingDrone", 5, ("body", "wing")),
+         "twoWing": ("twoWingDrone", 10, ("body", "leftWing", "rightWing"))}
 
 
 def dictionary(name):
@@ -147,9 +148,10 @@ def test_downstroke_is_the_flapping_joints_rate(tmp_path):
 def test_each_drone_its_figures_and_numbers(tmp_path, capsys):
     common = ["trajectory", "forceCoefficients", "prescribedJoints"]
     for name, extra in (("singleWing", []),
-                        ("bodyWing", ["bodyPitch", "wingPitchingMoment"])):
+                        ("bodyWing", ["bodyPitch", "wingPitchingMoment"]),
+                        ("twoWing", ["attitude"])):
         case = make_run(tmp_path / name, name)
-        # the drone found from the dictionary: a body named body
+        # the drone found from the dictionary: a body named leftWing, body
         assert drone.main(["-case", case]) == 0
         out = capsys.readouterr().out
         pngs = sorted(os.listdir(os.path.join(case, "plots")))
@@ -158,6 +160,14 @@ def test_each_drone_its_figures_and_numbers(tmp_path, capsys):
         assert "final x = -0.1 m, z = 0.1 m, xDot = -1, zDot = 1 m/s" in out
         assert "400 rows after the first (the written steps), t = 0 ... 0.1 s"\
             " (2 cycles)" in out
+
+
+def test_the_two_wing_drones_attitude(tmp_path, capsys):
+    case = make_run(tmp_path / "tw", "twoWing")
+    assert drone.main(["-case", case, "-o", str(tmp_path / "p")]) == 0
+    # q_1 = -t is the two-wing drone's y; yaw, pitch, roll follow no motion
+    assert "final yaw 0, pitch 0, roll 0 deg, y -0.1 m" in \
+        capsys.readouterr().out
 
 
 def test_a_body_wing_run_without_its_coefficients_writes_nothing(tmp_path):

@@ -45,6 +45,8 @@ def test_flight_data_joints_equal_and_perturbed(tmp_path):
     ok, text = rc.flight_data_joints(case)
     assert ok, text
     assert "4 rows" in text
+    # the free joints named by index: their order is the case's
+    assert "final q_0..q_1 = " in text and "x = " not in text
     d = np.loadtxt(dat)
     d[-1, 1] += 1e-12
     save_joints(dat, d, "%.15g")

@@ -72,10 +72,12 @@ def flight_data_joints(case):
     same = h.shape == j.shape and bool((h == j).all())
     bad = [k for k, v in flight.arrays().items()
            if not np.isfinite(v[1:]).all()]
+    # the free joints' order is the case's (SW, BW: z, x; two wings: x, y, z)
     return same and not bad, (
         "flight data = joints.dat: %d rows, time and q_0..q_%d exactly (15"
-        " digits), final x = q_1 = %.6g m, z = q_0 = %.6g m; non-finite: %s"
-        % (len(h), n - 1, h[-1, 2], h[-1, 1], bad or "none"))
+        " digits), final q_0..q_%d = %s; non-finite: %s"
+        % (len(h), n - 1, min(n, 3) - 1,
+           " ".join("%.6g" % v for v in h[-1, 1:4]), bad or "none"))
 
 
 def references(path):

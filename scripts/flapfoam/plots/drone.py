@@ -2,18 +2,18 @@
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
 """
-Plots of a drone run, single-wing or body-wing (Allrun calls it at the end
-of a run, through the case's scripts/plotRun.py).
+Plots of a drone run, single-wing, body-wing or two-wing (Allrun calls it
+at the end of a run, through the case's scripts/plotRun.py).
 
     flapfoam plot_drone [-case DIR] [-o OUTDIR] [-dict FILE]
-        [-drone singleWing|bodyWing]
+        [-drone singleWing|bodyWing|twoWing]
 
 Reads the run's time series (flapfoam.io.run_series: its flight data, or,
 for a run without it, its joints.dat and bodies.dat joined over the run and
 its restarts) and its multibody dictionary (-dict, default
-DIR/constant/dynamicMeshDict; the drone: -drone, else bodyWing if the
-dictionary has a body named body), and writes in OUTDIR (default
-DIR/plots):
+DIR/constant/dynamicMeshDict; the drone: -drone, else twoWing if the
+dictionary has a body named leftWing, bodyWing if one named body, else
+singleWing), and writes in OUTDIR (default DIR/plots):
 
   trajectory.png         the x-z path [mm]: the single-wing drone's surge
                          link (x = q_1 (Tx), z = q_0 (Tz)), the body-wing
@@ -22,17 +22,20 @@ DIR/plots):
                          downstroke (the flapping joint's qDot < 0)
                          shaded: the single-wing drone's wing from its
                          force, C = F/(0.5 rho S U_ref^2) (below); the
-                         body-wing drone's wing and body, the flight data's
+                         other drones' wings and body, the flight data's
                          coefficients (wing S = R cbar, body S = pi r^2);
   prescribedJoints.png   the prescribed joints (the wang entries of the
                          dictionary's imposedMotion) against their analytic
                          Wang motion, and the difference;
   stepTimers.png         the step-timer chart (flapfoam.plots.step_timers
                          on postProcessing/stepTimers);
-and the body-wing drone's per-case panels (Drone.panels):
+and the per-case panels (Drone.panels): the body-wing drone's
   bodyPitch.png          the body's pitch theta = q_2 [deg];
   wingPitchingMoment.png the wing's C_m = M_y/(0.5 rho S U_ref^2 cbar), M
-                         about the body's centre of mass.
+                         about the body's centre of mass;
+the two-wing drone's
+  attitude.png           the body's yaw, pitch and roll (q_3, q_4, q_5)
+                         and its y = q_1.
 
 Reference values (docs/paper.md section 3), from the flapping entry and
 rhoInf of the dictionary: S = pi/4 c_r R = R cbar (planform area of the
@@ -165,18 +168,21 @@ def from_force(run):
     return {"wing": (cx, cz)}
 
 
-def from_flight_data(run):
-    """The body-wing drone's wing and body: the flight data's
-    coefficients."""
-    out = {}
-    for body in ("wing", "body"):
-        b = run.series.bodies.get(body)
-        if b is None or b.coefficients is None:
-            raise FlapFoamError("plotRun: no coefficients/%s in the flight "
-                                "data of %s (postProcessing/flightData/*/"
-                                "flightData.h5)" % (body, run.name))
-        out[body] = (b.coefficients[1:, 0], b.coefficients[1:, 1])
-    return out
+def flight_data_coefficients(bodies):
+    """A drone's loads: the flight data's coefficients C_xI, C_zI of
+    bodies (names)."""
+    def loads(run):
+        out = {}
+        for body in bodies:
+            b = run.series.bodies.get(body)
+            if b is None or b.coefficients is None:
+                raise FlapFoamError("plotRun: no coefficients/%s in the "
+                                    "flight data of %s (postProcessing/"
+                                    "flightData/*/flightData.h5)"
+                                    % (body, run.name))
+            out[body] = (b.coefficients[1:, 0], b.coefficients[1:, 1])
+        return out
+    return loads
 
 
 def downstroke(run):
@@ -211,16 +217,43 @@ def wing_pitching_moment(run, out):
     save(fig, out, "wingPitchingMoment.png")
 
 
+def attitude(run, out):
+    """The two-wing drone's body attitude, yaw, pitch and roll (q_3, q_4,
+    q_5), and its y."""
+    q = run.series.q
+    fig, axes = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
+    for qi, name in ((3, "yaw psi = q_3"), (4, "pitch theta = q_4"),
+                     (5, "roll = q_5")):
+        axes[0].plot(run.f*run.t, np.degrees(q[:, qi]), label=name)
+    axes[0].set_ylabel("[deg]")
+    axes[0].legend(fontsize=8)
+    axes[0].set_title("Attitude of the body (%s)" % run.model.split(":")[0])
+    axes[1].plot(run.f*run.t, 1e3*q[:, 1])
+    axes[1].set_ylabel("y = q_1 [mm]")
+    axes[1].set_xlabel("t f [cycles]")
+    for ax in axes:
+        ax.grid(True, alpha=0.3)
+    save(fig, out, "attitude.png")
+    print("plotRun: final yaw %.6g, pitch %.6g, roll %.6g deg, y %.6g m"
+          % (tuple(np.degrees(q[-1, 3:6])) + (q[-1, 1],)))
+
+
+BODY_PATH = ("x [mm]", "z [mm]", "path of the body's centre of mass")
+
 DRONES = {
     "singleWing": Drone(
         "Single-wing drone", surge_link,
         ("x = q_1 (Tx) [mm]", "z = q_0 (Tz) [mm]",
          "trajectory of the surge link"), from_force),
     "bodyWing": Drone(
-        "Body-wing drone", body_centre,
-        ("x [mm]", "z [mm]", "path of the body's centre of mass"),
-        from_flight_data, {"bodyPitch": body_pitch,
-                           "wingPitchingMoment": wing_pitching_moment}),
+        "Body-wing drone", body_centre, BODY_PATH,
+        flight_data_coefficients(("wing", "body")),
+        {"bodyPitch": body_pitch,
+         "wingPitchingMoment": wing_pitching_moment}),
+    "twoWing": Drone(
+        "Two-wing drone", body_centre, BODY_PATH,
+        flight_data_coefficients(("leftWing", "rightWing", "body")),
+        {"attitude": attitude}),
 }
 
 
@@ -398,6 +431,13 @@ def plot(run, drone, out):
     return written
 
 
+def default_drone(bodies):
+    """The drone of a dictionary's bodies (names)."""
+    if "leftWing" in bodies:
+        return "twoWing"
+    return "bodyWing" if "body" in bodies else "singleWing"
+
+
 def main(argv=None, drone=None):
     ap = argparse.ArgumentParser(prog="flapfoam plot_drone",
                                  description=__doc__.split("\n")[1],
@@ -410,8 +450,9 @@ def main(argv=None, drone=None):
                     help="multibody dictionary (default "
                          "CASE/constant/dynamicMeshDict)")
     ap.add_argument("-drone", choices=sorted(DRONES), default=drone,
-                    help="the drone (default: bodyWing if the dictionary "
-                         "has a body named body, else singleWing)")
+                    help="the drone (default: twoWing if the dictionary "
+                         "has a body named leftWing, bodyWing if one named "
+                         "body, else singleWing)")
     a = ap.parse_args(argv)
     out = a.output or os.path.join(a.case, "plots")
     dict_path = a.dict or os.path.join(a.case, "constant", "dynamicMeshDict")
@@ -420,8 +461,7 @@ def main(argv=None, drone=None):
                             % dict_path)
     coeffs = multibody_coeffs(dict_path)
     run = read_run(a.case, coeffs)
-    name = a.drone or ("bodyWing" if "body" in coeffs.get("bodies", {})
-                       else "singleWing")
+    name = a.drone or default_drone(coeffs.get("bodies", {}))
     written = plot(run, DRONES[name], out)
     rc = step_timers_chart(a.case, out, run.name)
     if rc != 0:
