@@ -17,7 +17,10 @@ Grid: NAME=LO:HI:N (N values, LO and HI included), NAME=V1,V2,... or
 NAME=V (flapfoam.studies.qs_sweep's grid), NAME = LOOP.TERM.GAIN, GAIN one of Kp Ki
 Kd rateSetPoint (a constant): the entry eABAMeshMotionCoeffs/controller/
 loops/LOOP/terms/TERM/GAIN of the case's dictionary with the variant (the
-dictionary's value, or none, elsewhere).  The case (default: the
+dictionary's value, or none, elsewhere).  Linked gains, one value for
+several entries: NAME+NAME2+... (a NAME after + prefixed by - takes the
+value negated: the mirrored loops of two wings, e.g.
+leftOffset.yaw.Kp+rightOffset.yaw.Kp, leftOffset.x.Kp+-rightOffset.x.Kp).  The case (default: the
 body-wing drone) is set up once by its Allrun -model quasiSteady -variant
 V -cycles 1 -deltaT DT (DIR/template, log DIR/log.template); every
 point is a copy of it (DIR/pNNNNN, removed after its run unless -keep or
@@ -63,6 +66,12 @@ from flapfoam.studies.qs_sweep import (Sweep, SweepError, edges, grid_points, ma
 GAINS = ("Kp", "Ki", "Kd", "rateSetPoint")
 
 
+def linked(group):
+    """[(LOOP.TERM.GAIN, sign)] of a grid name NAME+-NAME2+..."""
+    return [(n[1:], -1) if n.startswith("-") else (n, 1)
+            for n in group.split("+")]
+
+
 class Template:
     """The case's quasi-steady run folder of one cycle, made by its Allrun
     with the variant: the controller's terms (the allowed grid names) and
@@ -83,15 +92,27 @@ class Template:
         self.names = []
         self.text = None
 
+    def allowed(self, text):
+        """The grid names allowed in -grid text: every LOOP.TERM.GAIN and
+        the linked groups of them text names."""
+        bounds = dict(self.bounds)
+        for word in text.split():
+            group = word.partition("=")[0]
+            if all(n in self.bounds for n, _ in linked(group)):
+                bounds[group] = (-math.inf, math.inf)
+        return bounds
+
     def prepare(self, grid, cycles):
-        """Placeholders gainSweep_<i> for the grid's gains; endTime of
-        cycles; no step timers."""
+        """Placeholders gainSweep_<i> (gainSweepNeg_<i>: negated) for the
+        grid's gains; endTime of cycles; no step timers."""
         self.names = list(grid)
-        for i, name in enumerate(self.names):
-            loop, term, gain = name.split(".")
-            foam_dictionary("-entry", "eABAMeshMotionCoeffs/controller/loops/"
-                           "%s/terms/%s/%s" % (loop, term, gain), "-set",
-                           "gainSweep_%d" % i, self.dict)
+        for i, group in enumerate(self.names):
+            for name, sign in linked(group):
+                loop, term, gain = name.split(".")
+                foam_dictionary("-entry", "eABAMeshMotionCoeffs/controller/"
+                               "loops/%s/terms/%s/%s" % (loop, term, gain),
+                               "-set", "gainSweep%s_%d"
+                               % ("Neg" if sign < 0 else "", i), self.dict)
         foam_dictionary("-entry", "endTime", "-set", repr(cycles*self.period),
                        self.control_dict)
         foam_dictionary("-entry", "functions/stepTimers", "-remove",
@@ -106,8 +127,9 @@ class Template:
                         os.path.join(case, "system"))
         text = self.text
         for i, name in enumerate(self.names):
-            text = text.replace("gainSweep_%d;" % i,
-                                "%s;" % repr(float(values[name])))
+            v = float(values[name])
+            text = text.replace("gainSweep_%d;" % i, "%s;" % repr(v))
+            text = text.replace("gainSweepNeg_%d;" % i, "%s;" % repr(-v))
         with open(os.path.join(case, "constant", "dynamicMeshDict"),
                   "w") as f:
             f.write(text)
@@ -255,7 +277,7 @@ def main(argv=None):
         os.makedirs(args.dir, exist_ok=True)
         template = Template(os.path.abspath(args.case), args.variant,
                             args.delta_t, os.path.abspath(args.dir))
-        grid = parse_grid(args.grid, template.bounds)
+        grid = parse_grid(args.grid, template.allowed(args.grid))
         pair = map_pair(grid, args.map)
         bands = control_plot.parse_bands(args.band, template.terms)
         end = args.cycles*template.period
