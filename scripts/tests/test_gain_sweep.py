@@ -8,7 +8,7 @@ import math
 
 import pytest
 
-from flapfoam.studies import gain_sweep
+from flapfoam.studies import gain_sweep, qs_case
 from flapfoam.studies.qs_sweep import SweepError, parse_grid
 
 
@@ -22,9 +22,9 @@ def a_template(names=(), text=None):
 
 
 def test_linked_names_and_signs():
-    assert gain_sweep.linked("leftOffset.x.Kp+-rightOffset.x.Kp") == \
+    assert qs_case.linked("leftOffset.x.Kp+-rightOffset.x.Kp") == \
         [("leftOffset.x.Kp", 1), ("rightOffset.x.Kp", -1)]
-    assert gain_sweep.linked("leftOffset.yaw.Kp") == \
+    assert qs_case.linked("leftOffset.yaw.Kp") == \
         [("leftOffset.yaw.Kp", 1)]
 
 

@@ -163,3 +163,13 @@ def test_trim_dict_is_checked(tmp_path):
                        " flapping.phase flapping.K stroke.amplitude"
                        " stroke.offset stroke.phase"):
         check_variables(coeffs, ["flapping.frequency"])
+    # linked: one value for mirrored entries, each member checked
+    path.write_text("variables { flapping.amplitude+-stroke.amplitude"
+                    " (1 1.5); }\n")
+    assert trim.read_trim_dict(str(path)) == {
+        "flapping.amplitude+-stroke.amplitude": (1.0, 1.5)}
+    assert set(check_variables(
+        coeffs, ["flapping.amplitude+-stroke.amplitude"])) == \
+        {"flapping", "stroke"}
+    with pytest.raises(StudyError, match="'stroke.frequency': not allowed"):
+        check_variables(coeffs, ["flapping.amplitude+-stroke.frequency"])

@@ -162,7 +162,7 @@ def check_variables(coeffs, names):
                if isinstance(e, dict)}
     allowed = ["%s.%s" % (n, k) for n, e in motions.items()
                for k in TRIM_KEYS.get(e.get("type", [""])[0], ())]
-    for name in names:
+    for name, _ in itertools.chain(*(qs_case.linked(g) for g in names)):
         if name not in allowed:
             raise StudyError("trim variable '%s': not allowed (ENTRY.KEY of"
                              " an imposedMotion entry; allowed: %s; the"
@@ -254,20 +254,24 @@ class CycleMap:
         return self.layout.from_rows(q[None, :], q_dot[None, :])[0]
 
     def prepare(self, variables=()):
-        """The variables (ENTRY.KEY, checked) and their dictionary values;
-        placeholders in the template: trimVariable_<i>, trimState_q,
+        """The variables (ENTRY.KEY, checked; linked: ENTRY.KEY+-ENTRY2.KEY2,
+        one value, negated after -, qs_case.linked) and their dictionary
+        values (a linked variable's first entry's); placeholders in the
+        template: trimVariable_<i> (trimVariableNeg_<i>), trimState_q,
         trimState_qDot; controlDict: a row every cycle, endTime
         trimEndTime.  Once, before the first run."""
         motions = check_variables(self.coeffs, variables)
         self.variables = list(variables)
-        self.values = np.array([dictionary_value(motions[v.split(".")[0]],
-                                                 v.split(".")[1])
-                                for v in self.variables])
-        for i, name in enumerate(self.variables):
-            entry, key = name.split(".")
-            foam_dictionary("-entry", "%s/imposedMotion/"
-                            "%s/%s" % (COEFFS, entry, key), "-set",
-                            "trimVariable_%d" % i, self.dict)
+        firsts = [qs_case.linked(v)[0][0].split(".") for v in self.variables]
+        self.values = np.array([dictionary_value(motions[entry], key)
+                                for entry, key in firsts])
+        for i, group in enumerate(self.variables):
+            for name, sign in qs_case.linked(group):
+                entry, key = name.split(".")
+                foam_dictionary("-entry", "%s/imposedMotion/%s/%s"
+                                % (COEFFS, entry, key), "-set",
+                                "trimVariable%s_%d"
+                                % ("Neg" if sign < 0 else "", i), self.dict)
         for key in ("q", "qDot"):
             foam_dictionary("-entry", "%s/%s" % (COEFFS, key), "-set",
                             "trimState_" + key, self.dict)
@@ -291,6 +295,7 @@ class CycleMap:
         text = self.text
         for i, v in enumerate(values):
             text = text.replace("trimVariable_%d;" % i, "%r;" % float(v))
+            text = text.replace("trimVariableNeg_%d;" % i, "%r;" % -float(v))
         for key, v in (("q", q), ("qDot", q_dot)):
             text = text.replace("trimState_%s;" % key, "(%s);" % " ".join(
                 repr(float(a)) for a in v))

@@ -59,17 +59,11 @@ from flapfoam.plots.control import ControlPlotError
 from flapfoam.errors import run_tool
 from flapfoam.paths import project_path
 from flapfoam.studies import qs_case
-from flapfoam.studies.qs_case import StudyError, foam_dictionary
+from flapfoam.studies.qs_case import StudyError, foam_dictionary, linked
 from flapfoam.studies.qs_sweep import (Sweep, SweepError, edges, grid_points, map_pair,
                               parse_grid, write_table)
 
 GAINS = ("Kp", "Ki", "Kd", "rateSetPoint")
-
-
-def linked(group):
-    """[(LOOP.TERM.GAIN, sign)] of a grid name NAME+-NAME2+..."""
-    return [(n[1:], -1) if n.startswith("-") else (n, 1)
-            for n in group.split("+")]
 
 
 class Template:

@@ -91,6 +91,14 @@ class Joint:
         return self.type in ("Px", "Py", "Pz")
 
 
+def linked(group):
+    """[(NAME, sign)] of a linked name NAME+-NAME2+...: one value for
+    several dictionary entries, negated after a - (the mirrored wings'
+    entries, e.g. flapping.amplitude+-rightFlapping.amplitude)."""
+    return [(n[1:], -1) if n.startswith("-") else (n, 1)
+            for n in group.split("+")]
+
+
 def joint_map(log_text):
     """[Joint] of a rigidBodySimulate log, in q index order."""
     joints = []

@@ -75,7 +75,7 @@ from flapfoam.io.foam_dict import read_foam_dict
 from flapfoam.paths import project_path
 from flapfoam.studies.cycle_map import (COEFFS, CycleMap, MapSettings,
                                         cycle_mean_loads, read_edits)
-from flapfoam.studies.qs_case import (StudyError, check_ranges,
+from flapfoam.studies.qs_case import (StudyError, check_ranges, linked,
                                        write_summary)
 
 AXES = {"x": "forward", "z": "climb"}
@@ -401,11 +401,13 @@ def variant_lines(result, settings, header):
     values, x0, _ = p.split(result.z)
     q, q_dot = p.map.layout.to_q(x0)
     mesh_dict = "constant/dynamicMeshDict"
-    own = ["%s/imposedMotion/%s" % (COEFFS, n.replace(".", "/"))
-           for n in p.names[:p.k]] + [COEFFS + "/q", COEFFS + "/qDot"]
-    values_of = dict(zip(own, ["%r" % float(v) for v in values] +
-                         ["(%s)" % " ".join("%r" % float(a) for a in v)
-                          for v in (q, q_dot)]))
+    values_of = {"%s/imposedMotion/%s" % (COEFFS, n.replace(".", "/")):
+                 "%r" % (sign*float(v))
+                 for group, v in zip(p.names[:p.k], values)
+                 for n, sign in linked(group)}
+    values_of.update((COEFFS + "/" + k, "(%s)" % " ".join(
+        "%r" % float(a) for a in v)) for k, v in (("q", q), ("qDot", q_dot)))
+    own = list(values_of)
     lines = ["# " + h for h in header]
     lines += ["%s %s %s" % e for e in settings.map.edit_lines()
               if not (e[0] == mesh_dict and e[1] in own)]
