@@ -133,17 +133,19 @@ bool Foam::cellCellStencils::octreeInverseDistance::addressingUnchanged
 }
 
 
-void Foam::cellCellStencils::octreeInverseDistance::warnEmptyStencils
+void Foam::cellCellStencils::octreeInverseDistance::releaseEmptyStencils
 (
     const labelList& slots,
     const labelListList& donorCellCells
-) const
+)
 {
     // Acceptors left without a stencil: the donor became a hole after the
     // donor search (flood fill or fringe walk) and so did all its
-    // neighbours.  The stock stencil keeps them interpolated from nothing
-    // (the momentum matrix then has a zero diagonal there); same here,
-    // with a warning that says where
+    // neighbours.  The stock stencil keeps them interpolated from nothing:
+    // dynamicOversetFvMesh then scales their row by 1 - weight = 0 and adds
+    // no donor, the diagonal is 0 and the smoother divides by it (a BW
+    // hover died of it at t = 0.9436 s).  Here their weight is 0: the
+    // cells are solved as calculated cells this step
     const label nCells = mesh_.nCells();
     const labelList& acceptors = interpolationCells_;
     const pointField& cc = mesh_.cellCentres();
@@ -176,10 +178,21 @@ void Foam::cellCellStencils::octreeInverseDistance::warnEmptyStencils
                 << zoneID()[slots[i]] << " at " << cc[slots[i]];
         }
     }
+    for (const label i : empty)
+    {
+        cellInterpolationWeight_[acceptors[i]] = 0;
+    }
+    dynamicOversetFvMesh::correctBoundaryConditions
+    <
+        volScalarField,
+        oversetFvPatchField<scalar>
+    >(cellInterpolationWeight_.boundaryFieldRef(), false);
+
     WarningInFunction
         << nEmpty << " interpolated cells have an empty stencil"
         << " (their donor and its neighbours are holes) at time "
-        << mesh_.time().timeName() << "; on this rank:"
+        << mesh_.time().timeName() << ": solved as calculated cells (weight"
+        << " 0) this step; on this rank:"
         << where.str().c_str() << nl
         << "    cell types written as field " << emptyStencilField
         << endl;
@@ -207,7 +220,7 @@ bool Foam::cellCellStencils::octreeInverseDistance::createStencilOnePass()
 
     const bool same = addressingUnchanged(slots, donorCellCells);
 
-    warnEmptyStencils(slots, donorCellCells);
+    releaseEmptyStencils(slots, donorCellCells);
 
     // Weights from the acceptor's centre (stock stencilWeights)
     if (same)
