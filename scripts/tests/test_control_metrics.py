@@ -28,3 +28,20 @@ def test_metrics_of_made_up_errors():
     # 0.001: never out
     never = error_metrics(t, 0.001 + 0*t, 0.01, 1.0)
     assert never["settlingTime"] == 0 and never["inBand"] == 1
+
+
+def test_summary_keys_named_by_what_they_measure():
+    from types import SimpleNamespace as NS
+    from flapfoam.plots.control import summary_keys
+    terms = [NS(label="height.z", quantity="position", component=2),
+             NS(label="pitch.theta", quantity="orientation", component=1)]
+    run = NS(name="a", terms=terms)
+    rows = [{"run": "a", "quantity": "height.z", "maxAbsError": 0.002},
+            {"run": "a", "quantity": "pitch.theta",
+             "maxAbsError": math.pi/180},
+            {"run": "b", "quantity": "height.z", "maxAbsError": 9.0}]
+    keys = summary_keys(rows, run, 0.5, "cfd")
+    assert keys == {"closed_loop_settle_s_cfd": 0.5,
+                    "closed_loop_max_abs_dz_m_cfd": 0.002,
+                    "closed_loop_max_abs_pitch_deg_cfd": 1.0}
+    assert "closed_loop_max_abs_dz_m" in summary_keys(rows, run, 0.5)

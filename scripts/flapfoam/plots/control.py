@@ -8,6 +8,7 @@ controller's outputs, and how well the set-points are held.
 
     flapfoam plot_control RUN [RUN2 ...] [-o DIR] [-settle T]
         [-band B1,B2,... | -band LOOP.TERM=B,...] [-check]
+        [-summary FILE [-label L]]
 
 RUN: a run folder with constant/dynamicMeshDict (its eABAMeshMotionCoeffs/
 controller, read through foamDictionary -expand) and the flight data
@@ -37,7 +38,14 @@ overlaid, with the set-point, the band after T) and DIR/control-outputs.png
 (every loop's output, the loops named by the flight data's control
 columns LOOP.output).  DIR: default RUN/plots of the first run.  -check:
 a PASS/FAIL line per run and quantity, exit status 1 unless every one is
-within its band after T.  numpy, h5py, matplotlib.
+within its band after T.  -summary FILE: the first run's largest errors
+after T merged into the JSON object of FILE (a results folder's
+summary.json), named by what they measure: closed_loop_max_abs_dz_m (a
+position's z; dx, dy), closed_loop_max_abs_pitch_deg (an orientation's y;
+roll x, yaw z), closed_loop_max_abs_duz_m_per_s (a velocity's),
+closed_loop_max_abs_wz_deg_per_s (an angular velocity's), each with
+_L appended if -label L, and closed_loop_settle_s[_L].  numpy, h5py,
+matplotlib.
 """
 
 import argparse
@@ -62,6 +70,15 @@ QUANTITIES = {
     "orientation": ("orientation", 180/math.pi, "deg", "rad", 0.05),
     "angularVelocity": ("angular_velocity", 180/math.pi, "deg/s", "rad/s",
                         1.0),
+}
+
+# the summary's name of a measure: quantity -> (names of x y z, unit,
+# factor from SI)
+SUMMARY_NAMES = {
+    "position": (("dx", "dy", "dz"), "m", 1.0),
+    "velocity": (("dux", "duy", "duz"), "m_per_s", 1.0),
+    "orientation": (("roll", "pitch", "yaw"), "deg", 180/math.pi),
+    "angularVelocity": (("wx", "wy", "wz"), "deg_per_s", 180/math.pi),
 }
 
 METRICS = ("settlingTime", "maxAbsError", "meanError", "rmsError",
@@ -351,6 +368,22 @@ def plot_outputs(runs, out):
     save(fig, out, "control-outputs.png")
 
 
+def summary_keys(rows, run, settle, label=None):
+    """The summary keys of run's rows (-summary)."""
+    suffix = "_" + label if label else ""
+    keys = {"closed_loop_settle_s" + suffix: settle}
+    terms = {s.label: s for s in run.terms}
+    for row in rows:
+        if row["run"] != run.name:
+            continue
+        s = terms[row["quantity"]]
+        names, unit, factor = SUMMARY_NAMES[s.quantity]
+        keys["closed_loop_max_abs_%s_%s%s" % (names[s.component], unit,
+                                              suffix)] = \
+            factor*row["maxAbsError"]
+    return keys
+
+
 def arguments(argv):
     parser = argparse.ArgumentParser(prog="flapfoam plot_control",
                                      description=__doc__.split("\n\n")[1])
@@ -359,6 +392,8 @@ def arguments(argv):
     parser.add_argument("-settle", type=float, metavar="T")
     parser.add_argument("-band")
     parser.add_argument("-check", action="store_true")
+    parser.add_argument("-summary", metavar="FILE")
+    parser.add_argument("-label", metavar="L")
     return parser.parse_args(argv)
 
 
@@ -383,6 +418,12 @@ def main(argv=None):
         plot_outputs(runs, out)
         print("plot_control: settle %g s; %s/control-{states,outputs}.png,"
               " control-metrics.csv" % (settle, out))
+        if args.summary:
+            from flapfoam.studies.qs_case import write_summary
+            write_summary(args.summary,
+                          summary_keys(rows, runs[0], settle, args.label))
+            print("plot_control: wrote the first run's closed_loop keys into"
+                  " %s" % args.summary)
     except ControlPlotError as e:
         sys.exit("plot_control: %s" % e)
     status = 0
