@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 # License
 #     This file is part of flapFoam: free software
 #     under the GNU General Public License v3 or later (COPYING).
@@ -9,7 +8,7 @@ postProcessing/flightData/*/flightData.h5): the largest |y|, |yaw|, |roll|
 its end, and the mean roll and yaw rates of each whole flapping cycle (the
 difference of the angle over the cycle, deg per cycle).
 
-    lateral.py [-case DIR] [-f HZ] [-zero] [-rollRate SIGN] [-quiet]
+    flapfoam lateral [-case DIR] [-f HZ] [-zero] [-rollRate SIGN] [-quiet]
 
 -zero: "PASS" if every lateral state and rate is exactly 0 in every row,
 else "FAIL"; -rollRate +1 (-1): "PASS" if the last whole cycle's mean roll
@@ -23,6 +22,7 @@ import sys
 
 import numpy as np
 
+from flapfoam.errors import run_tool
 from flapfoam.io import flight_data
 
 LATERAL = {"y": 1, "yaw": 3, "roll": 5}
@@ -37,7 +37,8 @@ def cycle_rates(t, angle, f):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[1])
+    ap = argparse.ArgumentParser(prog="flapfoam lateral",
+                                 description=__doc__.split("\n\n")[1])
     ap.add_argument("-case", default=".")
     ap.add_argument("-f", type=float, default=20.0,
                     help="flapping frequency [Hz] (default 20)")
@@ -86,4 +87,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_tool(main))
