@@ -182,11 +182,6 @@ void Foam::cellCellStencils::octreeInverseDistance::releaseEmptyStencils
     {
         cellInterpolationWeight_[acceptors[i]] = 0;
     }
-    dynamicOversetFvMesh::correctBoundaryConditions
-    <
-        volScalarField,
-        oversetFvPatchField<scalar>
-    >(cellInterpolationWeight_.boundaryFieldRef(), false);
 
     WarningInFunction
         << nEmpty << " interpolated cells have an empty stencil"
@@ -299,15 +294,18 @@ bool Foam::cellCellStencils::octreeInverseDistance::buildStencil()
 
     UList<scalar>& weight = cellInterpolationWeight_;
     weight.swap(ws_.weight);
+
+    // The inverse-distance stencil around each donor (the stock
+    // createStencil's result, one pass, addressing kept if unchanged; the
+    // weight of an acceptor left without one set to 0), then the weight's
+    // boundary values
+    const bool rebuilt = createStencilOnePass();
     dynamicOversetFvMesh::correctBoundaryConditions
     <
         volScalarField,
         oversetFvPatchField<scalar>
     >(cellInterpolationWeight_.boundaryFieldRef(), false);
-
-    // The inverse-distance stencil around each donor (the stock
-    // createStencil's result, one pass, addressing kept if unchanged)
-    return createStencilOnePass();
+    return rebuilt;
 }
 
 
