@@ -74,3 +74,26 @@ def test_run_passes_fails_and_says_why(tmp_path, capsys, monkeypatch):
     assert out[1].startswith("FAIL p.md:6: exit 1")
     assert out[2].startswith("FAIL p.md:10: a sh block without")
     assert out[3].startswith("PASS p.md:14")
+
+
+def test_each_page_has_its_own_scratch_folder(tmp_path, capsys, monkeypatch):
+    """Two pages that make the same run folder under {tmp} do not meet
+    (CI stop 53: two READMEs' {tmp}/hover); a page's blocks share its
+    folder, in order, and each block's log lies in it."""
+    (tmp_path / "etc").mkdir()
+    (tmp_path / "etc" / "bashrc").write_text("")
+    for d in ("a", "b"):
+        (tmp_path / d).mkdir()
+        (tmp_path / d / "README.md").write_text(
+            "<!-- test: run; R => {tmp}/hover -->\n```sh\nmkdir R\n```\n"
+            "<!-- test: run; R => {tmp}/hover -->\n```sh\ntest -d R\n```\n")
+    monkeypatch.setenv("FLAPFOAM_PROJECT_DIR", str(tmp_path))
+    monkeypatch.chdir(tmp_path)
+    rc = dc.main(["a/README.md", "b/README.md", "-tmp", "t"])
+    out = capsys.readouterr().out.splitlines()
+    assert rc == 0, out
+    assert [o.split(":")[0] for o in out] == ["PASS a/README.md"] * 2 + \
+        ["PASS b/README.md"] * 2
+    for d in ("a", "b"):
+        assert (tmp_path / "t" / (d + "_README.md") / "hover").is_dir()
+        assert (tmp_path / "t" / (d + "_README.md") / "log.6").is_file()

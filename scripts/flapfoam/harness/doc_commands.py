@@ -14,13 +14,16 @@ Every ```sh block of a page carries a marker on the line before it:
     <!-- test: run from DIR -->         from the folder DIR of the root
     <!-- test: run; A => B; C => D -->  run with each command rewritten,
                                         regular expression A replaced by B
-                                        (in order; {tmp} is a scratch
-                                        folder, {n} the block's line, {k}
-                                        the command's index in it)
+                                        (in order; {tmp} is the page's
+                                        scratch folder, {n} the block's
+                                        line, {k} the command's index)
     <!-- test: skip REASON -->          not run (hours of CPU, a cluster,
                                         placeholders): the reason is shown
 
-The rewrites make a documented command cheap and keep it out of the
+Each page has a scratch folder of its own (TMP/<page>, its path with
+/ as _), so that two pages' run folders of the same name never meet;
+a page's blocks share it, in order.  The rewrites make a documented
+command cheap and keep it out of the
 user's run folders (the tiny mesh, a few steps, a run folder under
 {tmp}), nothing else.  A block runs as one bash script from the project's
 root (etc/bashrc sourced, set -e, comments and trailing & dropped, lines
@@ -129,13 +132,19 @@ def folder(block, root):
     return os.path.join(root, first[2]) if len(first) == 3 else root
 
 
+def scratch(block, tmp):
+    """The page's scratch folder under tmp: TMP/<page path, / as _>."""
+    return os.path.join(tmp, block.page.replace(os.sep, "_"))
+
+
 def run(block, root, tmp, timeout):
-    """Runs a block; (ok, text)."""
+    """Runs a block in its page's scratch folder; (ok, text)."""
+    tmp = scratch(block, tmp)
+    os.makedirs(tmp, exist_ok=True)
     lines = script(block, tmp)
     body = "set -e\n. %s/etc/bashrc > /dev/null\n%s\n" % (
         root, "\n".join(lines))
-    log = os.path.join(tmp, "log.%s-%d" % (os.path.basename(block.page),
-                                           block.line))
+    log = os.path.join(tmp, "log.%d" % block.line)
     try:
         with open(log, "w") as fh:
             rc = subprocess.call(["bash", "-c", body],
@@ -181,8 +190,8 @@ def main(argv=None):
                 elif b.marker.startswith("skip"):
                     print("SKIP %s: %s" % (b.where, b.marker[4:].strip()))
                 elif a.list:
-                    print("%s:\n    %s" % (b.where,
-                                           "\n    ".join(script(b, tmp))))
+                    print("%s:\n    %s" % (b.where, "\n    ".join(
+                        script(b, scratch(b, tmp)))))
                 else:
                     ok, text = run(b, root, tmp, a.timeout)
                     failed += not ok
