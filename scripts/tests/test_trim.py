@@ -16,14 +16,17 @@ checked.
 
 import math
 import re
+import shutil
 
 import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
 from flapfoam.studies import trim
+from flapfoam.paths import project_path
 from flapfoam.studies.cycle_map import (CycleMap, Flight, MapSettings,
-                                        StateLayout, check_variables)
+                                        StateLayout, check_variables,
+                                        cycle_mean_loads)
 from flapfoam.studies.qs_case import Joint, StudyError
 
 G, K, D, C, I = 9.81, 20.0, 0.8, 3.0, 0.5
@@ -173,3 +176,21 @@ def test_trim_dict_is_checked(tmp_path):
         {"flapping", "stroke"}
     with pytest.raises(StudyError, match="'stroke.frequency': not allowed"):
         check_variables(coeffs, ["flapping.amplitude+-stroke.frequency"])
+
+
+@pytest.mark.skipif(shutil.which("rigidBodySimulate") is None,
+                    reason="needs flapFoam's etc/bashrc (rigidBodySimulate)")
+def test_two_wing_hover_mean_lift_is_the_weight(tmp_path):
+    """The two-wing drone's hover (variants/hover, trimmed at deltaT
+    1e-4): over one cycle the wings' mean force is the weight within
+    1e-5 (measured 2.2e-6; sampled every 25th step, as the case writes
+    its flight data, the mean read 1.0002) and nothing sideways."""
+    cycle_map = CycleMap(MapSettings(project_path("cases", "twoWingDrone"),
+                                     ["hover"], 1e-4, str(tmp_path), 1))
+    cycle_map.prepare()
+    flight = cycle_map.run(cycle_map.values, cycle_map.initial_state(), 1,
+                           flight_data=True)
+    loads = cycle_mean_loads(flight.folder, cycle_map.layout,
+                             cycle_map.weight)
+    assert abs(loads["z"] - 1) < 1e-5
+    assert abs(loads["x"]) < 1e-6 and abs(loads["y"]) < 1e-12

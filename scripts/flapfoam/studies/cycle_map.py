@@ -259,7 +259,8 @@ class CycleMap:
         values (a linked variable's first entry's); placeholders in the
         template: trimVariable_<i> (trimVariableNeg_<i>), trimState_q,
         trimState_qDot; controlDict: a row every cycle, endTime
-        trimEndTime.  Once, before the first run."""
+        trimEndTime, the flight data (if any) every step.  Once, before
+        the first run."""
         motions = check_variables(self.coeffs, variables)
         self.variables = list(variables)
         firsts = [qs_case.linked(v)[0][0].split(".") for v in self.variables]
@@ -277,12 +278,25 @@ class CycleMap:
                             "trimState_" + key, self.dict)
         foam_dictionary("-entry", "writeInterval", "-set", str(self.steps),
                         self.control_dict)
+        self._flight_data_every_step()
         foam_dictionary("-entry", "endTime", "-set", "trimEndTime",
                         self.control_dict)
         with open(self.dict) as f:
             self.text = f.read()
         with open(self.control_dict) as f:
             self.control_text = f.read()
+
+    def _flight_data_every_step(self):
+        """The case's flightData function object (if it has one) samples
+        every step: a cycle mean over its rows is then the trapezoidal
+        rule on every step (on 20 rows a cycle the wing's force aliases:
+        the two-wing hover's mean lift read 1.0002 of the weight)."""
+        functions = read_foam_dict(self.control_dict).get("functions", {})
+        if "flightData" not in functions:
+            return
+        for key in ("executeInterval", "writeInterval"):
+            foam_dictionary("-entry", "functions/flightData/" + key, "-set",
+                            "1", self.control_dict)
 
     def _write(self, folder, values, x0, cycles):
         """A trial's folder: the template's system/, the dictionary with
