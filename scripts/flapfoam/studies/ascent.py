@@ -51,7 +51,8 @@ import numpy as np
 from flapfoam.io import flight_data, run_series
 from flapfoam.plots.plotting import cycle_axes, plt, save
 from flapfoam.io.tables import joined_table
-from flapfoam.errors import FlapFoamError, run_tool
+from flapfoam.errors import run_tool
+from flapfoam.paths import output_folder
 
 PAPER = {
     "core_hours_per_cycle_per_million_cells": 96.0,
@@ -351,10 +352,16 @@ def summarise(inputs):
                  ", ".join(map(str, PAPER["lift_cycles"]))))
     plot_coefficients(run, others, inputs.out)
     plot_lev(lev, run.f, inputs.out)
+    return write_results(s, inputs.run, inputs.out, inputs.max_mb)
+
+
+def write_results(s, run, out, max_mb):
+    """The run's flight data thinned to max_mb into out/flightData.h5 (s
+    gets flight_data_thinning), then s into out/summary.json; s."""
     s["flight_data_thinning"] = thin_copy(
-        flight_data.find(inputs.run),
-        os.path.join(inputs.out, "flightData.h5"), inputs.max_mb*1e6)
-    with open(os.path.join(inputs.out, "summary.json"), "w") as fh:
+        flight_data.find(run), os.path.join(out, "flightData.h5"),
+        max_mb*1e6)
+    with open(os.path.join(out, "summary.json"), "w") as fh:
         json.dump(s, fh, indent=1)
     return s
 
@@ -375,11 +382,7 @@ def main(argv=None):
                    help="the copied flight data's largest size [MB] (rows"
                    " thinned to it; default 20)")
     a = p.parse_args(argv)
-    try:
-        os.makedirs(a.out, exist_ok=True)
-    except OSError as e:
-        raise FlapFoamError("ascent: -o %s: cannot make the folder: %s"
-                            % (a.out, e))
+    output_folder(a.out, "ascent")
     s = summarise(Inputs(a.run, a.out, a.vacuum, a.qs, a.max_mb))
     for key, value in s.items():
         if key not in ("paper",):
