@@ -266,13 +266,9 @@ class CycleMap:
         firsts = [qs_case.linked(v)[0][0].split(".") for v in self.variables]
         self.values = np.array([dictionary_value(motions[entry], key)
                                 for entry, key in firsts])
-        for i, group in enumerate(self.variables):
-            for name, sign in qs_case.linked(group):
-                entry, key = name.split(".")
-                foam_dictionary("-entry", "%s/imposedMotion/%s/%s"
-                                % (COEFFS, entry, key), "-set",
-                                "trimVariable%s_%d"
-                                % ("Neg" if sign < 0 else "", i), self.dict)
+        qs_case.set_placeholders(
+            self.dict, self.variables, lambda name: "%s/imposedMotion/%s"
+            % (COEFFS, name.replace(".", "/")), "trimVariable")
         for key in ("q", "qDot"):
             foam_dictionary("-entry", "%s/%s" % (COEFFS, key), "-set",
                             "trimState_" + key, self.dict)
@@ -306,10 +302,7 @@ class CycleMap:
         shutil.copytree(os.path.join(self.folder, "system"),
                         os.path.join(folder, "system"))
         q, q_dot = self.layout.to_q(x0)
-        text = self.text
-        for i, v in enumerate(values):
-            text = text.replace("trimVariable_%d;" % i, "%r;" % float(v))
-            text = text.replace("trimVariableNeg_%d;" % i, "%r;" % -float(v))
+        text = qs_case.fill_placeholders(self.text, "trimVariable", values)
         for key, v in (("q", q), ("qDot", q_dot)):
             text = text.replace("trimState_%s;" % key, "(%s);" % " ".join(
                 repr(float(a)) for a in v))

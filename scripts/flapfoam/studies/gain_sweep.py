@@ -100,13 +100,10 @@ class Template:
         """Placeholders gainSweep_<i> (gainSweepNeg_<i>: negated) for the
         grid's gains; endTime of cycles; no step timers."""
         self.names = list(grid)
-        for i, group in enumerate(self.names):
-            for name, sign in linked(group):
-                loop, term, gain = name.split(".")
-                foam_dictionary("-entry", "eABAMeshMotionCoeffs/controller/"
-                               "loops/%s/terms/%s/%s" % (loop, term, gain),
-                               "-set", "gainSweep%s_%d"
-                               % ("Neg" if sign < 0 else "", i), self.dict)
+        qs_case.set_placeholders(
+            self.dict, self.names, lambda name: "eABAMeshMotionCoeffs/"
+            "controller/loops/%s/terms/%s/%s" % tuple(name.split(".")),
+            "gainSweep")
         foam_dictionary("-entry", "endTime", "-set", repr(cycles*self.period),
                        self.control_dict)
         foam_dictionary("-entry", "functions/stepTimers", "-remove",
@@ -119,11 +116,8 @@ class Template:
         os.makedirs(os.path.join(case, "constant"))
         shutil.copytree(os.path.join(self.folder, "system"),
                         os.path.join(case, "system"))
-        text = self.text
-        for i, name in enumerate(self.names):
-            v = float(values[name])
-            text = text.replace("gainSweep_%d;" % i, "%s;" % repr(v))
-            text = text.replace("gainSweepNeg_%d;" % i, "%s;" % repr(-v))
+        text = qs_case.fill_placeholders(
+            self.text, "gainSweep", [values[n] for n in self.names])
         with open(os.path.join(case, "constant", "dynamicMeshDict"),
                   "w") as f:
             f.write(text)

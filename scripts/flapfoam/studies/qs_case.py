@@ -99,6 +99,25 @@ def linked(group):
             for n in group.split("+")]
 
 
+def set_placeholders(dictionary, groups, entry_of, prefix):
+    """Sets every entry of the groups' linked names (entry_of(NAME): its
+    path in dictionary) to the placeholder PREFIX_<i> of group i, or
+    PREFIXNeg_<i> where the name is negated (fill_placeholders)."""
+    for i, group in enumerate(groups):
+        for name, sign in linked(group):
+            foam_dictionary("-entry", entry_of(name), "-set", "%s%s_%d" % (
+                prefix, "Neg" if sign < 0 else "", i), dictionary)
+
+
+def fill_placeholders(text, prefix, values):
+    """text with PREFIX_<i> set to values[i] and PREFIXNeg_<i> to
+    -values[i] (set_placeholders)."""
+    for i, v in enumerate(values):
+        text = text.replace("%s_%d;" % (prefix, i), "%r;" % float(v))
+        text = text.replace("%sNeg_%d;" % (prefix, i), "%r;" % -float(v))
+    return text
+
+
 def joint_map(log_text):
     """[Joint] of a rigidBodySimulate log, in q index order."""
     joints = []

@@ -39,7 +39,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from flapfoam.checks.lateral import cycle_rates
+from flapfoam.checks.lateral import LATERAL, cycle_rates
 from flapfoam.errors import FlapFoamError, run_tool
 from flapfoam.io import run_series
 from flapfoam.paths import output_folder
@@ -48,7 +48,6 @@ from flapfoam.studies.ascent import core_hours, n_cells, wall_clock, \
     write_results
 
 STATES = ("x", "y", "z", "yaw", "pitch", "roll")
-LATERAL = (1, 3, 5)
 WINGS = ("leftWing", "rightWing")
 
 
@@ -78,13 +77,16 @@ def read(case):
 
 def lateral_summary(cfd, qs):
     """The symmetric flights' lateral keys."""
-    rates = qs.q_dot[:, LATERAL] if qs.q_dot is not None else 0.0
+    cols = list(LATERAL.values())
+    rates = qs.q_dot[:, cols] if qs.q_dot is not None else 0.0
     return {
-        "max_abs_lateral_qs": float(max(np.abs(qs.q[:, LATERAL]).max(),
+        "max_abs_lateral_qs": float(max(np.abs(qs.q[:, cols]).max(),
                                         np.abs(rates).max())),
-        "max_abs_y_m_cfd": float(np.abs(cfd.q[:, 1]).max()),
-        "max_abs_yaw_deg_cfd": float(np.degrees(np.abs(cfd.q[:, 3]).max())),
-        "max_abs_roll_deg_cfd": float(np.degrees(np.abs(cfd.q[:, 5]).max()))}
+        "max_abs_y_m_cfd": float(np.abs(cfd.q[:, LATERAL["y"]]).max()),
+        "max_abs_yaw_deg_cfd":
+            float(np.degrees(np.abs(cfd.q[:, LATERAL["yaw"]]).max())),
+        "max_abs_roll_deg_cfd":
+            float(np.degrees(np.abs(cfd.q[:, LATERAL["roll"]]).max()))}
 
 
 def manoeuvre_summary(cfd, qs, f):
@@ -92,8 +94,8 @@ def manoeuvre_summary(cfd, qs, f):
     the first cycle (None where the run has one cycle or none)."""
     s = {}
     for label, run in (("cfd", cfd), ("qs", qs)):
-        rates = [round(r, 6) for _, r in cycle_rates(run.time,
-                                                     run.q[:, 5], f)]
+        rates = [round(r, 6) for _, r in cycle_rates(
+            run.time, run.q[:, LATERAL["roll"]], f)]
         s["roll_rate_deg_per_cycle_" + label] = rates
         s["manoeuvre_rate_deg_per_cycle_" + label] = \
             float(np.mean(rates[1:])) if len(rates) > 1 else None
@@ -136,7 +138,8 @@ def plot_manoeuvre(cfd, qs, s, inputs):
     """The roll variant's roll angle and its per-cycle rates."""
     fig, axes = plt.subplots(2, 1, figsize=(8, 6))
     for label, run, style in (("CFD", cfd, "-"), ("QS", qs, "--")):
-        axes[0].plot(run.time*inputs.f, np.degrees(run.q[:, 5]), style,
+        axes[0].plot(run.time*inputs.f,
+                     np.degrees(run.q[:, LATERAL["roll"]]), style,
                      label=label)
         rates = s["roll_rate_deg_per_cycle_" + label.lower()]
         axes[1].plot(np.arange(1, len(rates) + 1), rates, "o" + style,
