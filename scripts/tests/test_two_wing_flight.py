@@ -50,10 +50,14 @@ def test_summary_keys_from_known_flights(tmp_path):
     roll = make_run(tmp_path / "roll", roll_rates=(1, 3, 5))
     roll_qs = make_run(tmp_path / "rollQs", roll_rates=(1, 2, 4))
     out = tmp_path / "out"
+    out.mkdir()
+    (out / "summary.json").write_text('{"trim_iterations": 3, "cells": 1}')
     rc = tw.main([cfd, "-qs", qs, "-roll", roll, "-rollQs", roll_qs,
                   "-o", str(out)])
     s = json.loads((out / "summary.json").read_text())
     assert rc == 0
+    # the other studies' keys kept, its own replaced
+    assert s["trim_iterations"] == 3
     assert s["cells"] == 500000 and s["ranks"] == 2
     assert s["cycles_run"] == 3.0
     # 3600 s x 2 ranks / 3 cycles / 0.5 M cells = 1.33 core-h

@@ -13,7 +13,8 @@ times); -vacuum DIR a run of the same dictionaries without air load
 (rigidBodySimulate -bodyLoad vacuum), -qs DIR the quasi-steady model's run
 (Allrun -model quasiSteady).  Writes in OUTDIR:
 
-  summary.json     cells, ranks, cycles_run, end_time, wall_clock_s (the
+  summary.json     (its keys merged into it) cells, ranks, cycles_run,
+                   end_time, wall_clock_s (the
                    solver logs' ClockTime, every start, the work a kill
                    lost included), core_hours_per_cycle_per_million_cells
                    (and the paper's, 96), pitch_deg_at_cycle_end (the body
@@ -41,7 +42,6 @@ Prints the summary.  numpy, h5py, matplotlib.
 
 import argparse
 import glob
-import json
 import os
 import re
 from dataclasses import dataclass
@@ -53,6 +53,7 @@ from flapfoam.plots.plotting import cycle_axes, plt, save
 from flapfoam.io.tables import joined_table
 from flapfoam.errors import run_tool
 from flapfoam.paths import output_folder
+from flapfoam.studies.qs_case import write_summary
 
 PAPER = {
     "core_hours_per_cycle_per_million_cells": 96.0,
@@ -357,12 +358,12 @@ def summarise(inputs):
 
 def write_results(s, run, out, max_mb):
     """The run's flight data thinned to max_mb into out/flightData.h5 (s
-    gets flight_data_thinning), then s into out/summary.json; s."""
+    gets flight_data_thinning), then s merged into out/summary.json (the
+    keys of other studies there kept); s."""
     s["flight_data_thinning"] = thin_copy(
         flight_data.find(run), os.path.join(out, "flightData.h5"),
         max_mb*1e6)
-    with open(os.path.join(out, "summary.json"), "w") as fh:
-        json.dump(s, fh, indent=1)
+    write_summary(os.path.join(out, "summary.json"), s)
     return s
 
 

@@ -14,7 +14,8 @@ QS flight (Allrun -model quasiSteady); RUN2, QS2: the roll variant's.  The
 tree's free joints in q order: x, y, z, yaw, pitch, roll (q_0 ... q_5).
 Writes in OUTDIR:
 
-  summary.json   cells, ranks, cycles_run, wall_clock_s (every start of
+  summary.json   (its keys merged into it: other studies' kept) cells,
+                 ranks, cycles_run, wall_clock_s (every start of
                  the solver), core_hours_per_cycle_per_million_cells;
                  max_abs_lateral_qs (the largest |y| [m], |yaw|, |roll|
                  [rad] and their rates in the QS flight: 0 if symmetric);
