@@ -24,9 +24,10 @@ Each page has a scratch folder of its own (TMP/<page>, its path with
 / as _), so that two pages' run folders of the same name never meet;
 a page's blocks share it, in order.  The rewrites make a documented
 command cheap and keep it out of the user's run folders (the tiny mesh,
-a few steps, a run folder under {tmp}), nothing else.  A block runs as one bash script from the project's
-root (etc/bashrc sourced, set -e, comments and trailing & dropped, lines
-joined at a trailing backslash), under -timeout (default 300 s).  A sh
+a few steps, a run folder under {tmp}), nothing else.  A block runs as
+one bash script from the project's root (etc/bashrc sourced, set -e,
+comments and trailing & dropped, lines joined at a trailing backslash),
+under -timeout (default 300 s).  A sh
 block without a marker is an error: each block says whether it is run.
 One PASS, FAIL or SKIP line per block; exit status 1 if a block fails or
 has no marker.
