@@ -80,14 +80,13 @@ def lateral_summary(cfd, qs):
     """The symmetric flights' lateral keys."""
     cols = list(LATERAL.values())
     rates = qs.q_dot[:, cols] if qs.q_dot is not None else 0.0
-    return {
-        "max_abs_lateral_qs": float(max(np.abs(qs.q[:, cols]).max(),
-                                        np.abs(rates).max())),
-        "max_abs_y_m_cfd": float(np.abs(cfd.q[:, LATERAL["y"]]).max()),
-        "max_abs_yaw_deg_cfd":
-            float(np.degrees(np.abs(cfd.q[:, LATERAL["yaw"]]).max())),
-        "max_abs_roll_deg_cfd":
-            float(np.degrees(np.abs(cfd.q[:, LATERAL["roll"]]).max()))}
+    s = {"max_abs_lateral_qs": float(max(np.abs(qs.q[:, cols]).max(),
+                                         np.abs(rates).max())),
+         "max_abs_y_m_cfd": float(np.abs(cfd.q[:, LATERAL["y"]]).max())}
+    for angle in ("yaw", "roll"):
+        s["max_abs_%s_deg_cfd" % angle] = float(
+            np.degrees(np.abs(cfd.q[:, LATERAL[angle]]).max()))
+    return s
 
 
 def manoeuvre_summary(cfd, qs, f):
