@@ -57,7 +57,7 @@ from flapfoam.mesh.parameters import file_entries
 # The wings' hinges (flapping and pitching axes) at y = +-HINGE, on the
 # sphere: with both through the body centre the wings would cross at the
 # stroke's ends; at +-15 mm the plates stay 23 mm apart (21 mm in the roll
-# variant), more than a wing component's margin (15 mm on tiny), so that
+# variant), more than a wing component's margin (18 mm on tiny), so that
 # neither comes into the other's component (a plate through a component
 # cuts it in two, and the hole cutting takes one part for a hole: at +-7.5
 # mm, 3 532 of 7 884 cells of each wing at t = 1 ms).  README.md,
@@ -78,6 +78,11 @@ COMPONENT = dataclasses.replace(wing_mesh.COMPONENT, root_margin=10e-3)
 # only so that it stays its own mirror image (placeMesh.py body)
 SHELL = sphere_mesh.Shell(margin=25e-3, axis=(0.0, 1.0, 0.0))
 WINGS = ("leftWing", "rightWing")
+# The wing components' margins where they differ from the level's (tiny:
+# 1.2 cbar, not 1.0: with 15 mm the flight's poses at 6-7 deg of body
+# pitch left a wing's overset-boundary cell in a background hole, and the
+# hole flooded both wings; README.md, "Overset assembly")
+MARGINS = {"tiny": 18e-3}
 
 
 def both_sides(region):
@@ -96,7 +101,8 @@ def main(argv=None):
     tilts = (-THETA_MAX, 0.0, THETA_MAX)
     if args.list:
         for name in sphere_mesh.LEVELS:
-            m = mesh_gen.build(name, COMPONENT, tilts=tilts)
+            m = mesh_gen.build(name, COMPONENT, tilts=tilts,
+                               margin=MARGINS.get(name))
             _, sinfo = sphere_mesh.block_mesh_dict(name, SHELL.margin)
             print("%-9s wings 2 x %7d cells, body %6d cells, background h "
                   "%.2f mm" % (name, m.winfo["cellsPlanned"], sinfo["cells"],
@@ -104,7 +110,8 @@ def main(argv=None):
         return 0
 
     m = mesh_gen.build(args.level, COMPONENT,
-                       mesh_gen.pose(args.phi, args.alpha), tilts)
+                       mesh_gen.pose(args.phi, args.alpha), tilts,
+                       MARGINS.get(args.level))
     m.binfo["regions"] = [both_sides(r) for r in m.binfo["regions"]]
     stext, sinfo = sphere_mesh.block_mesh_dict(args.level, SHELL.margin)
     hdr = mesh_gen.header(argv)

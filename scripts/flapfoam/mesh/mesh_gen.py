@@ -14,6 +14,7 @@ bin/tools/makeOversetMesh.
 """
 
 import argparse
+import dataclasses
 import json
 import math
 import os
@@ -75,11 +76,14 @@ def pose(phi, alpha):
     return math.radians(phi), math.radians(alpha)
 
 
-def build(level, component, pose=(0.0, 0.0), tilts=(0.0,)):
+def build(level, component, pose=(0.0, 0.0), tilts=(0.0,), margin=None):
     """The wing component (at the pose [rad]) and the background of a
     level, the background refined around the volume the component sweeps
-    (with the stroke plane pitched by each angle of tilts)."""
+    (with the stroke plane pitched by each angle of tilts); margin [m], if
+    given, replaces the level's component margin."""
     lev = LEVELS[level]
+    if margin is not None:
+        lev = dataclasses.replace(lev, margin=margin)
     comp = level_component(component, lev)
     wbm, winfo = wing_component(lev, comp, pose)
     check_block_sides(wbm)
