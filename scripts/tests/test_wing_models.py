@@ -90,6 +90,19 @@ def test_mesh_components_in_merge_order(tmp_path, capsys):
         "wing\nbody sphereMesh.py -map\nbackground\n"
 
 
+def test_a_margin_given_replaces_the_levels():
+    # the two-wing drone's tiny wing components: 18 mm, not the level's
+    # 1 cbar (15 mm); the cells the planform needs grow with it
+    from flapfoam.mesh import mesh_gen
+    from flapfoam.mesh.wing_mesh import COMPONENT
+    base = mesh_gen.build("tiny", COMPONENT)
+    wide = mesh_gen.build("tiny", COMPONENT, margin=18e-3)
+    assert base.comp.margin == pytest.approx(LEVELS["tiny"].margin)
+    assert wide.comp.margin == 18e-3 and wide.lev.margin == 18e-3
+    assert wide.winfo["cellsPlanned"] > base.winfo["cellsPlanned"]
+    assert LEVELS["tiny"].margin == pytest.approx(geo.CBAR)   # unchanged
+
+
 def test_parameters_by_their_file_names():
     from flapfoam.mesh.parameters import camel, file_entries
     assert camel("n_ref") == "nRef" and camel("core_frac") == "coreFrac"
