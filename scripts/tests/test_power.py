@@ -82,6 +82,9 @@ def test_the_numbers_of_a_climbing_wing(tmp_path):
     assert r["ideal_power_w"] == pytest.approx(ideal, rel=1e-4)
     assert r["figure_of_merit"] == pytest.approx(
         ideal/(P0 - MASS*9.81*CLIMB), rel=1e-3)
+    # each cycle's mean is the harmonic's P0 too
+    assert len(r["cycle_power_w_per_kg"]) == 4
+    assert r["cycle_power_w_per_kg"] == pytest.approx([P0/MASS]*4, rel=1e-3)
     # no store: the mean of max(p, 0) of P0 + 0.3 sin
     x = np.linspace(0, 2*math.pi, 200001)
     positive = np.mean(np.maximum(P0 + 0.3*np.sin(x), 0))
@@ -115,3 +118,12 @@ def test_the_command_writes_the_summary_key(tmp_path, capsys):
     assert keys["figure_of_merit_qs"] == keys["power_qs"]["figure_of_merit"]
     with pytest.raises(SystemExit):
         power.main([run, "-summary", str(summary)])       # no -label
+
+
+def test_the_plot_draws_each_run(tmp_path, capsys):
+    run = str(made_up_run(tmp_path / "run"))
+    png = tmp_path / "power.png"
+    power.main([run, run, "-from", "1", "-plot", str(png)])
+    assert "wrote" in capsys.readouterr().out
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert png.stat().st_size > 10000

@@ -7,7 +7,7 @@ power over whole flapping cycles, per kilogram, and the figure of merit of
 the flapping wings as hovering rotors (docs/trim.md, "Power").
 
     flapfoam power RUN [RUN ...] [-from C] [-to C] [-flapping ENTRY]
-        [-radius R] [-json FILE] [-summary FILE -label L]
+        [-radius R] [-json FILE] [-summary FILE -label L] [-plot FILE]
 
 RUN: a drone run folder (CFD or Allrun -model quasiSteady): its flight data
 and its constant/dynamicMeshDict (the bodies' masses and inertias, g, the
@@ -33,7 +33,9 @@ last whole one), time-integrated (trapezoids: the CFD's step is adaptive):
 in W and W/kg (m: every body's mass, the tree's whole mass).  -json FILE:
 every number; -summary FILE -label L (one RUN): the keys power_w_per_kg_L,
 figure_of_merit_L and power_L (every number) merged into a results
-folder's summary.json.  numpy, h5py.
+folder's summary.json; -plot FILE: a PNG of each run's cycle-mean joint
+power per kg (its mean and its ideal power beside it).  numpy, h5py,
+matplotlib.
 """
 
 import argparse
@@ -166,15 +168,49 @@ def power(run, window, flapping="flapping", radius=None):
     rho = wings[0][1]
     ideal = math.sqrt(weight**3/(2*rho*area))
     aero = sum(joints) - change
+    total = p.sum(axis=1)
+    per_cycle = [mean_over(t, total, t0 + k*window.period,
+                           t0 + (k + 1)*window.period)/mass
+                 for k in range(n)]
     return {"run": run, "cycles": [window.first, window.first + n],
             "period_s": window.period, "mass_kg": mass,
             "joint_power_w": dict(zip(("q_%d" % i for i in s.prescribed),
                                       joints)),
             "power_w": sum(joints), "power_w_per_kg": sum(joints)/mass,
+            "cycle_power_w_per_kg": per_cycle,
             "power_positive_w_per_kg": positive/mass,
             "energy_change_w": float(change), "aero_power_w": aero,
             "stroke_amplitude_rad": float(phi), "disk_area_m2": area,
             "ideal_power_w": ideal, "figure_of_merit": ideal/aero}
+
+
+def plot(results, path):
+    """One PNG: each run's cycle-mean joint power per kg over its window
+    (its mean dashed), and its ideal power per kg (dotted)."""
+    from flapfoam.plots.backend import pyplot
+    plt = pyplot()
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for r in results:
+        first = r["cycles"][0]
+        cycles = np.arange(first, first + len(r["cycle_power_w_per_kg"])) + 1
+        name = os.path.basename(os.path.normpath(r["run"]))
+        line, = ax.plot(cycles, r["cycle_power_w_per_kg"], "o-",
+                        label="%s: %.1f W/kg, FM %.3f"
+                        % (name, r["power_w_per_kg"], r["figure_of_merit"]))
+        ax.axhline(r["power_w_per_kg"], color=line.get_color(), ls="--",
+                   lw=0.8)
+        ax.axhline(r["ideal_power_w"]/r["mass_kg"], color=line.get_color(),
+                   ls=":", lw=0.8)
+    ax.set_xlabel("cycle")
+    ax.set_ylabel("joint power [W/kg]")
+    ax.set_title("cycle-mean joint power (dashed: the mean; dotted: ideal)",
+                 fontsize=10)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    print("power: wrote %s" % path)
 
 
 def arguments(argv):
@@ -190,6 +226,7 @@ def arguments(argv):
     parser.add_argument("-json", metavar="FILE")
     parser.add_argument("-summary", metavar="FILE")
     parser.add_argument("-label")
+    parser.add_argument("-plot", metavar="FILE")
     args = parser.parse_args(argv)
     if args.summary and not (args.label and len(args.runs) == 1):
         parser.error("-summary: needs -label L and one RUN")
@@ -216,6 +253,8 @@ def main(argv=None):
                  r["power_w_per_kg"], r["power_positive_w_per_kg"],
                  r["aero_power_w"], r["ideal_power_w"],
                  r["figure_of_merit"]))
+    if args.plot:
+        plot(results, args.plot)
     if args.json:
         with open(args.json, "w") as f:
             json.dump(results, f, indent=1)
