@@ -187,8 +187,7 @@ def power(run, window, flapping="flapping", radius=None):
 def plot(results, path):
     """One PNG: each run's cycle-mean joint power per kg over its window
     (its mean dashed), and its ideal power per kg (dotted)."""
-    from flapfoam.plots.backend import pyplot
-    plt = pyplot()
+    from flapfoam.plots.plotting import plt, save
     fig, ax = plt.subplots(figsize=(7, 4.5))
     for r in results:
         first = r["cycles"][0]
@@ -207,9 +206,7 @@ def plot(results, path):
                  fontsize=10)
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
+    save(fig, os.path.dirname(path) or ".", os.path.basename(path))
     print("power: wrote %s" % path)
 
 
