@@ -65,6 +65,11 @@ def test_summary_keys_from_known_flights(tmp_path):
     assert s["max_abs_lateral_qs"] == 0.0
     assert s["max_abs_y_m_cfd"] == pytest.approx(2e-4, rel=1e-3)
     assert s["max_abs_roll_deg_cfd"] == 0.0
+    # y = 2e-4 sin: its bound reached in the first cycle; equal wings
+    sym = s["symmetry_cfd_by_cycle"]
+    assert sym["y_m"] == pytest.approx([2e-4]*3, rel=1e-3)
+    assert sym["roll_deg"] == [0.0]*3
+    assert sym["wing_lift_difference_percent"] == [0.0]*3
     assert s["roll_rate_deg_per_cycle_cfd"] == pytest.approx([1, 3, 5])
     assert s["manoeuvre_rate_deg_per_cycle_cfd"] == pytest.approx(4.0)
     assert s["manoeuvre_rate_deg_per_cycle_qs"] == pytest.approx(3.0)
@@ -87,3 +92,17 @@ def test_roll_runs_go_together(tmp_path, capsys):
     with pytest.raises(SystemExit):
         tw.parse(["r", "-qs", "q", "-o", "o", "-roll", "x"])
     assert "-roll and -rollQs go together" in capsys.readouterr().err
+
+
+def test_symmetry_by_cycle_bounds_and_lift_difference(tmp_path):
+    # roll growing 1, 3, 5 deg a cycle: bounds 1, 4, 9 deg to each cycle's
+    # end; the right wing lifting 1 % less: 200 (1 - 0.99) / 1.99 %
+    run = make_run(tmp_path / "roll", roll_rates=(1, 3, 5))
+    with h5py.File(tmp_path / "roll" / "postProcessing" / "flightData" / "0"
+                   / "flightData.h5", "a") as h:
+        h["bodies/rightWing/force"][:, 2] *= 0.99
+    sym = tw.symmetry_by_cycle(tw.read(run), F)
+    assert sym["roll_deg"] == pytest.approx([1, 4, 9])
+    assert sym["yaw_deg"] == [0.0]*3
+    assert sym["wing_lift_difference_percent"] == \
+        pytest.approx([200*0.01/1.99]*3)

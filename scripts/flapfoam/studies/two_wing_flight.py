@@ -20,7 +20,10 @@ Writes in OUTDIR:
                  max_abs_lateral_qs (the largest |y| [m], |yaw|, |roll|
                  [rad] and their rates in the QS flight: 0 if symmetric);
                  max_abs_y_m_cfd, max_abs_roll_deg_cfd,
-                 max_abs_yaw_deg_cfd (the CFD flight); with -roll:
+                 max_abs_yaw_deg_cfd (the CFD flight),
+                 symmetry_cfd_by_cycle (its |y|, |yaw|, |roll| bounds to
+                 the end of each cycle, the wings' cycle-mean lift
+                 difference in %); with -roll:
                  roll_rate_deg_per_cycle_cfd/_qs (each whole cycle's mean
                  roll rate) and manoeuvre_rate_deg_per_cycle_cfd/_qs (their
                  mean over the cycles after the first, the start-up)
@@ -86,6 +89,28 @@ def lateral_summary(cfd, qs):
     for angle in ("yaw", "roll"):
         s["max_abs_%s_deg_cfd" % angle] = float(
             np.degrees(np.abs(cfd.q[:, LATERAL[angle]]).max()))
+    return s
+
+
+def symmetry_by_cycle(cfd, f):
+    """The CFD flight's symmetry cycle by cycle (whole cycles k = 1, 2,
+    ...): the largest |y| [m], |yaw|, |roll| [deg] from the start to the
+    end of cycle k, and the difference of the wings' cycle-mean vertical
+    forces in % of their mean."""
+    n = int(np.floor(cfd.time[-1]*f + 1e-9))
+    s = {"y_m": [], "yaw_deg": [], "roll_deg": [],
+         "wing_lift_difference_percent": []}
+    lift = [cfd.bodies[w].force[:, 2] for w in WINGS]
+    for k in range(1, n + 1):
+        upto = cfd.time <= k/f + 1e-12
+        cycle = upto & (cfd.time > (k - 1)/f + 1e-12)
+        for name, scale in (("y_m", 1.0), ("yaw_deg", 180/np.pi),
+                            ("roll_deg", 180/np.pi)):
+            i = LATERAL[name.split("_")[0]]
+            s[name].append(float(scale*np.abs(cfd.q[upto, i]).max()))
+        left, right = (np.mean(l[cycle]) for l in lift)
+        s["wing_lift_difference_percent"].append(
+            float(200*(left - right)/(left + right)))
     return s
 
 
@@ -165,6 +190,7 @@ def summarise(inputs):
              round(core_hours(wall, ranks, cycles, cells), 2)
              if cycles > 0 else None}
     s.update(lateral_summary(cfd, qs))
+    s["symmetry_cfd_by_cycle"] = symmetry_by_cycle(cfd, inputs.f)
     runs = [("CFD", cfd, "-"), ("QS", qs, "--")]
     save(plot_states(runs, inputs.f, (0, 1, 2)), inputs.out,
          "trajectory.png")
