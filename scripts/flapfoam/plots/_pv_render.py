@@ -143,8 +143,8 @@ def mesh_view(calculated, walls, time, geometry):
     d.DiffuseColor = d.AmbientColor = [0, 0, 0]
     d.ColorArrayName = ["POINTS", ""]
     d.LineWidth = 3
-    caption(v, "t = %g s: the cells on z = %.4g m, a colour a zone (holes and"
-            " fringes left out), the walls black" % (time, centre[2]))
+    caption(v, "t = %g s: cells on z = %.4g m, a colour a zone, no holes or"
+            " fringes, walls black" % (time, centre[2]))
     Render(v)
     SaveScreenshot(prefix + "-mesh.png", v)
     return plane.GetDataInformation().GetNumberOfCells()
