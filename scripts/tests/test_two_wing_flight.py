@@ -70,6 +70,9 @@ def test_summary_keys_from_known_flights(tmp_path):
     assert sym["y_m"] == pytest.approx([2e-4]*3, rel=1e-3)
     assert sym["roll_deg"] == [0.0]*3
     assert sym["wing_lift_difference_percent"] == [0.0]*3
+    # two wings of 2e-2 N each, every cycle, both flights
+    assert s["wing_lift_n_by_cycle"]["cfd"] == pytest.approx([4e-2]*3)
+    assert s["wing_lift_n_by_cycle"]["qs"] == pytest.approx([4e-2]*3)
     assert s["roll_rate_deg_per_cycle_cfd"] == pytest.approx([1, 3, 5])
     assert s["manoeuvre_rate_deg_per_cycle_cfd"] == pytest.approx(4.0)
     assert s["manoeuvre_rate_deg_per_cycle_qs"] == pytest.approx(3.0)
@@ -106,3 +109,16 @@ def test_symmetry_by_cycle_bounds_and_lift_difference(tmp_path):
     assert sym["yaw_deg"] == [0.0]*3
     assert sym["wing_lift_difference_percent"] == \
         pytest.approx([200*0.01/1.99]*3)
+
+
+def test_wing_lift_by_cycle_takes_each_cycles_rows(tmp_path):
+    # the left wing lifting k/100 N in cycle k (its first row at t = 0 is
+    # no cycle's), the right 2e-2 N: cycle means 0.03, 0.04, 0.05 N
+    run = make_run(tmp_path / "cfd")
+    with h5py.File(tmp_path / "cfd" / "postProcessing" / "flightData" / "0"
+                   / "flightData.h5", "a") as h:
+        t = h["time"][:]
+        h["bodies/leftWing/force"][:, 2] = \
+            np.ceil(np.round(t*F, 9)).clip(1)/100
+    lift = tw.wing_lift_by_cycle([("cfd", tw.read(run))], F)
+    assert lift["cfd"] == pytest.approx([0.03, 0.04, 0.05])

@@ -23,7 +23,8 @@ Writes in OUTDIR:
                  max_abs_yaw_deg_cfd (the CFD flight),
                  symmetry_cfd_by_cycle (its |y|, |yaw|, |roll| bounds to
                  the end of each cycle, the wings' cycle-mean lift
-                 difference in %); with -roll:
+                 difference in %), wing_lift_n_by_cycle (both wings'
+                 cycle-mean vertical force [N], CFD and QS); with -roll:
                  roll_rate_deg_per_cycle_cfd/_qs (each whole cycle's mean
                  roll rate) and manoeuvre_rate_deg_per_cycle_cfd/_qs (their
                  mean over the cycles after the first, the start-up)
@@ -114,6 +115,19 @@ def symmetry_by_cycle(cfd, f):
     return s
 
 
+def wing_lift_by_cycle(runs, f):
+    """{label: [the cycle-mean vertical force of both wings [N], each whole
+    cycle of the first run]} of the runs [(label, series)]."""
+    n = int(np.floor(runs[0][1].time[-1]*f + 1e-9))
+    out = {}
+    for label, run in runs:
+        lift = sum(run.bodies[w].force[:, 2] for w in WINGS)
+        out[label] = [float(np.mean(lift[(run.time > k/f + 1e-12) &
+                                         (run.time <= (k + 1)/f + 1e-12)]))
+                      for k in range(n)]
+    return out
+
+
 def manoeuvre_summary(cfd, qs, f):
     """The roll variant's keys: each cycle's roll rate, their mean after
     the first cycle (None where the run has one cycle or none)."""
@@ -191,6 +205,8 @@ def summarise(inputs):
              if cycles > 0 else None}
     s.update(lateral_summary(cfd, qs))
     s["symmetry_cfd_by_cycle"] = symmetry_by_cycle(cfd, inputs.f)
+    s["wing_lift_n_by_cycle"] = wing_lift_by_cycle(
+        [("cfd", cfd), ("qs", qs)], inputs.f)
     runs = [("CFD", cfd, "-"), ("QS", qs, "--")]
     save(plot_states(runs, inputs.f, (0, 1, 2)), inputs.out,
          "trajectory.png")
