@@ -122,3 +122,11 @@ def test_wing_lift_by_cycle_takes_each_cycles_rows(tmp_path):
             np.ceil(np.round(t*F, 9)).clip(1)/100
     lift = tw.wing_lift_by_cycle([("cfd", tw.read(run))], F)
     assert lift["cfd"] == pytest.approx([0.03, 0.04, 0.05])
+
+
+def test_a_longer_qs_flight_is_drawn_over_the_cfd_cycles(tmp_path):
+    cfd = tw.read(make_run(tmp_path / "cfd"))
+    qs = tw.read(make_run(tmp_path / "qs"))
+    qs.time = qs.time*2
+    keep = tw.within(qs, cfd)
+    assert keep.sum() == 151 and qs.time[keep][-1] == pytest.approx(3/F)

@@ -141,15 +141,22 @@ def manoeuvre_summary(cfd, qs, f):
     return s
 
 
+def within(run, first):
+    """The rows of run up to the first run's last time (a longer QS
+    flight drawn over the CFD flight's cycles)."""
+    return run.time <= first.time[-1] + 1e-12
+
+
 def plot_states(runs, f, names):
     """The states names (indices into STATES) of the runs [(label, series,
     style)] against t f, one panel each, over the first run's times."""
     fig, axes = plt.subplots(len(names), 1, figsize=(8, 2.4*len(names)),
                              sharex=True)
     for label, s, style in runs:
+        k = within(s, runs[0][1])
         for ax, i in zip(axes, names):
             scale, unit = (1e3, "mm") if i < 3 else (180/np.pi, "deg")
-            ax.plot(s.time*f, scale*s.q[:, i], style, label=label)
+            ax.plot(s.time[k]*f, scale*s.q[k, i], style, label=label)
             cycle_axes(ax, "%s [%s]" % (STATES[i], unit), "")
     axes[0].legend(fontsize=8)
     axes[0].set_xlim(0, runs[0][1].time[-1]*f)
@@ -161,10 +168,11 @@ def plot_wing_forces(runs, f, out):
     the first one's times."""
     fig, axes = plt.subplots(2, 2, figsize=(11, 6), sharex=True)
     for label, s, style in runs:
+        k = within(s, runs[0][1])
         for col, wing in enumerate(WINGS):
             force = s.bodies[wing].force
             for row, (i, name) in enumerate(((2, "F_z"), (0, "F_x"))):
-                axes[row][col].plot(s.time*f, 1e3*force[:, i], style,
+                axes[row][col].plot(s.time[k]*f, 1e3*force[k, i], style,
                                     lw=0.8, label=label)
                 cycle_axes(axes[row][col], "%s [mN]" % name,
                            wing if row == 0 else "")
