@@ -93,39 +93,47 @@ def lateral_summary(cfd, qs):
     return s
 
 
+def whole_cycles(time, f):
+    """The rows of each whole cycle k = 0, 1, ... of the times (t in
+    (k/f, (k + 1)/f]), one boolean mask a cycle."""
+    n = int(np.floor(time[-1]*f + 1e-9))
+    return [(time > k/f + 1e-12) & (time <= (k + 1)/f + 1e-12)
+            for k in range(n)]
+
+
+def wing_cycle_lifts(run, f):
+    """{wing: [its cycle-mean vertical force [N], each whole cycle]}."""
+    cycles = whole_cycles(run.time, f)
+    return {w: np.array([np.mean(run.bodies[w].force[c, 2])
+                         for c in cycles]) for w in WINGS}
+
+
 def symmetry_by_cycle(cfd, f):
     """The CFD flight's symmetry cycle by cycle (whole cycles k = 1, 2,
     ...): the largest |y| [m], |yaw|, |roll| [deg] from the start to the
     end of cycle k, and the difference of the wings' cycle-mean vertical
     forces in % of their mean."""
-    n = int(np.floor(cfd.time[-1]*f + 1e-9))
-    s = {"y_m": [], "yaw_deg": [], "roll_deg": [],
-         "wing_lift_difference_percent": []}
-    lift = [cfd.bodies[w].force[:, 2] for w in WINGS]
-    for k in range(1, n + 1):
-        upto = cfd.time <= k/f + 1e-12
-        cycle = upto & (cfd.time > (k - 1)/f + 1e-12)
-        for name, scale in (("y_m", 1.0), ("yaw_deg", 180/np.pi),
-                            ("roll_deg", 180/np.pi)):
-            i = LATERAL[name.split("_")[0]]
-            s[name].append(float(scale*np.abs(cfd.q[upto, i]).max()))
-        left, right = (np.mean(l[cycle]) for l in lift)
-        s["wing_lift_difference_percent"].append(
-            float(200*(left - right)/(left + right)))
+    s = {}
+    for name, scale in (("y_m", 1.0), ("yaw_deg", 180/np.pi),
+                        ("roll_deg", 180/np.pi)):
+        bound = np.maximum.accumulate(
+            np.abs(cfd.q[:, LATERAL[name.split("_")[0]]]))
+        s[name] = [float(scale*bound[c].max())
+                   for c in whole_cycles(cfd.time, f)]
+    lifts = wing_cycle_lifts(cfd, f)
+    left, right = (lifts[w] for w in WINGS)
+    s["wing_lift_difference_percent"] = \
+        [float(d) for d in 200*(left - right)/(left + right)]
     return s
 
 
 def wing_lift_by_cycle(runs, f):
     """{label: [the cycle-mean vertical force of both wings [N], each whole
     cycle of the first run]} of the runs [(label, series)]."""
-    n = int(np.floor(runs[0][1].time[-1]*f + 1e-9))
-    out = {}
-    for label, run in runs:
-        lift = sum(run.bodies[w].force[:, 2] for w in WINGS)
-        out[label] = [float(np.mean(lift[(run.time > k/f + 1e-12) &
-                                         (run.time <= (k + 1)/f + 1e-12)]))
-                      for k in range(n)]
-    return out
+    n = len(whole_cycles(runs[0][1].time, f))
+    return {label: [float(v) for v in
+                    sum(wing_cycle_lifts(run, f).values())[:n]]
+            for label, run in runs}
 
 
 def manoeuvre_summary(cfd, qs, f):
